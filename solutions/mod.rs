@@ -1,0 +1,14 @@
+//! The reference solutions.
+
+pub mod aniso_ndf;
+pub mod beckmann_ndf;
+pub mod brdf_check;
+pub mod cook_torrance;
+pub mod cosine_sample;
+pub mod fresnel_schlick;
+pub mod kajiya_kay;
+pub mod ndf_sample;
+pub mod phong;
+pub mod reflect;
+pub mod refract_stack;
+pub mod smith_g1;

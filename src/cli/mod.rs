@@ -1,0 +1,33 @@
+//! The `pbrlab` command line: one file per subcommand.
+
+mod hint;
+mod tasks;
+
+use clap::{Parser, Subcommand};
+
+/// pbrlab: exercises, reference, renderer and grader for a physically based rendering course.
+#[derive(Parser, Debug)]
+#[command(name = "pbrlab", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// List every task with its points and whether you have attempted it.
+    Tasks(tasks::Args),
+    /// Show the hints of a task, one level at a time.
+    Hint(hint::Args),
+}
+
+/// Runs the command line.
+pub fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Some(Command::Tasks(args)) => tasks::run(args),
+        Some(Command::Hint(args)) => hint::run(args),
+        None => tasks::run(tasks::Args::default()),
+    }
+}

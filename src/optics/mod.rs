@@ -1,0 +1,8 @@
+//! Geometric optics that the framework provides: the exact dielectric Fresnel equations and
+//! the plane-parallel layer stack that the `refract_stack` task describes.
+
+mod fresnel;
+mod layer_stack;
+
+pub use fresnel::{fresnel_dielectric, fresnel_dielectric_f64};
+pub use layer_stack::{LayerStack, Slab, StackReport};

@@ -1,0 +1,526 @@
+//! The task table: the one place that lists every worksheet task, its metadata, its hints
+//! and its signature.
+//!
+//! # Conventions (every task, every file)
+//! - **Directions point away from the surface**: both `wo` (towards the viewer) and `wi`
+//!   (towards the light) start at the shading point. A ray's propagation direction is the
+//!   negative of such a direction.
+//! - **Local shading frame**: the normal is +z, so `cos θ = w.z`; for anisotropic materials
+//!   +x is the tangent along which `alpha_x` applies. Framework code converts with
+//!   [`crate::math::Frame`]; task functions that take a `tangent` or `n` say so.
+//! - **Float type**: the renderer's f32 (glam `Vec3`). The layer-stack calculator works in
+//!   f64 because its worksheet answers are checked to seven digits.
+//! - **Radiance** is linear RGB. Angles in the API are radians unless a name says `_deg`.
+//!
+//! # How an implementation is put together
+//! The [`tasks!`] invocation at the bottom of this file lists every task function once. It
+//! generates the [`Tasks`] trait and its implementations: [`crate::implementation::Student`]
+//! (the code in `exercises/`), `Reference` (the code in `solutions/`) and `Mixed` (a
+//! per-task choice). Task functions that build on other tasks take `t: &impl Tasks` as their
+//! first argument and call the other tasks through it, so the grader can grade one task with
+//! the reference standing in for the others, and `--impl mixed` can combine the two.
+
+use crate::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
+use crate::optics::{LayerStack, StackReport};
+use crate::sampling::Sampler;
+use glam::{Vec2, Vec3};
+
+/// Identifies one worksheet task. The discriminant is the task's index in [`TASKS`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum TaskId {
+    /// Mirror reflection of a direction about a normal.
+    Reflect,
+    /// Snell's law, total internal reflection and a stack of refracting layers.
+    RefractStack,
+    /// R0 and Schlick's approximation of the Fresnel reflectance.
+    FresnelSchlick,
+    /// Cosine-weighted hemisphere sampling and its pdf.
+    CosineSample,
+    /// The GGX Smith masking function G1.
+    SmithG1,
+    /// The Cook-Torrance microfacet BRDF.
+    CookTorrance,
+    /// The anisotropic GGX normal distribution function.
+    AnisoNdf,
+    /// The Phong BRDF and a numerical reciprocity test.
+    Phong,
+    /// The Kajiya-Kay hair fibre model.
+    KajiyaKay,
+    /// The Beckmann normal distribution function.
+    BeckmannNdf,
+    /// Sampling reflected directions through the NDF, with the half-vector Jacobian.
+    NdfSample,
+    /// A numerical BRDF plausibility checker.
+    BrdfCheck,
+    /// One recursive step of a path tracer.
+    PathTrace,
+    /// Direct lighting by multiple importance sampling.
+    Mis,
+    /// Free-flight sampling by delta tracking.
+    DeltaTracking,
+}
+
+impl TaskId {
+    /// Every task, in worksheet order.
+    pub const ALL: [TaskId; 15] = [
+        TaskId::Reflect,
+        TaskId::RefractStack,
+        TaskId::FresnelSchlick,
+        TaskId::CosineSample,
+        TaskId::SmithG1,
+        TaskId::CookTorrance,
+        TaskId::AnisoNdf,
+        TaskId::Phong,
+        TaskId::KajiyaKay,
+        TaskId::BeckmannNdf,
+        TaskId::NdfSample,
+        TaskId::BrdfCheck,
+        TaskId::PathTrace,
+        TaskId::Mis,
+        TaskId::DeltaTracking,
+    ];
+
+    /// The task's row in [`TASKS`].
+    pub fn info(self) -> &'static TaskInfo {
+        &TASKS[self as usize]
+    }
+
+    /// The task's id as written on the command line and in file names (`reflect`, …).
+    pub fn name(self) -> &'static str {
+        self.info().id
+    }
+
+    /// Looks a task up by its id (`"cook_torrance"`) or a unique prefix of it.
+    pub fn parse(s: &str) -> Result<TaskId, String> {
+        if let Some(t) = TaskId::ALL.iter().find(|t| t.name() == s) {
+            return Ok(*t);
+        }
+        let matches: Vec<TaskId> = TaskId::ALL
+            .iter()
+            .copied()
+            .filter(|t| t.name().starts_with(s))
+            .collect();
+        match matches.as_slice() {
+            [one] => Ok(*one),
+            [] => Err(format!(
+                "no task `{s}`; the tasks are: {}",
+                TaskId::ALL.map(|t| t.name()).join(", ")
+            )),
+            many => Err(format!(
+                "`{s}` could be any of: {}",
+                many.iter().map(|t| t.name()).collect::<Vec<_>>().join(", ")
+            )),
+        }
+    }
+}
+
+impl std::fmt::Display for TaskId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// One row of the task table.
+#[derive(Debug)]
+pub struct TaskInfo {
+    /// The task's id: its file name in `exercises/` and `solutions/`, and its CLI name.
+    pub id: &'static str,
+    /// A short title.
+    pub title: &'static str,
+    /// Where the task comes from in the worksheet (ERRATA.md's section labels).
+    pub section: &'static str,
+    /// Points the task is worth.
+    pub points: u32,
+    /// Tasks this one calls through `t: &impl Tasks` (the grader substitutes the reference
+    /// for them when grading this task alone).
+    pub needs: &'static [TaskId],
+    /// Hints in increasing levels of detail; `pbrlab hint TASK` shows them one at a time.
+    pub hints: &'static [&'static str],
+}
+
+/// The task table, indexed by [`TaskId`].
+pub static TASKS: [TaskInfo; 15] = [
+    TaskInfo {
+        id: "reflect",
+        title: "Mirror reflection",
+        section: "§1.1, §1.5",
+        points: 5,
+        needs: &[],
+        hints: &[
+            "Both wo and the result point away from the surface. Split wo into the part along \
+             n and the part in the surface plane; reflection keeps one and flips the other.",
+            "The result is 2 (wo·n) n − wo. Check it on wo = (0.6, 0.8, 0), n = (0, 1, 0): you \
+             should get (−0.6, 0.8, 0), still above the surface.",
+            "The normal you are given may not have unit length. Normalise it first, or the \
+             component along n is scaled by |n|².",
+        ],
+    },
+    TaskInfo {
+        id: "refract_stack",
+        title: "Snell's law, total internal reflection, a layer stack",
+        section: "§1.2, §1.4",
+        points: 10,
+        needs: &[TaskId::FresnelSchlick],
+        hints: &[
+            "Snell's law relates the sines: eta_i sin θi = eta_t sin θt. Work with cosines: \
+             cos²θt = 1 − (eta_i/eta_t)² (1 − cos²θi). A negative value means total internal \
+             reflection.",
+            "Rounding can make 1 − sin²θt slightly negative right at the critical angle; \
+             decide TIR with sin²θt ≥ 1 and clamp before the square root. The critical angle \
+             only exists when eta_i > eta_t.",
+            "For the stack, the product eta sin θ is the same in every medium, so each angle \
+             follows from the first one. The shift of the ray through a slab of thickness d is \
+             d sin(θ_in − θ_slab) / cos θ_slab; d tan θ_slab is a different quantity (how far \
+             the exit point is from the entry point along the interface).",
+            "Transmitted intensity multiplies (1 − R) over the interfaces. Use your \
+             fresnel_schlick for one column and crate::optics::fresnel_dielectric_f64 for the \
+             exact one.",
+        ],
+    },
+    TaskInfo {
+        id: "fresnel_schlick",
+        title: "Fresnel reflectance by Schlick's approximation",
+        section: "§1.3, §1.4.4, §3.4.2",
+        points: 8,
+        needs: &[],
+        hints: &[
+            "R0 is the reflectance at normal incidence: ((eta_i − eta_t)/(eta_i + eta_t))². \
+             Check glass/water: 0.0036085, not the 0.0041 the worksheet prints.",
+            "Schlick's curve is R0 + (1 − R0)(1 − cos θ)^5, but which θ? Going from dense to \
+             less dense (eta_i > eta_t), use the transmitted angle; if there is none, the \
+             reflectance is 1.",
+            "When the two indices are equal nothing reflects, at any angle. Make sure your code \
+             returns 0 there instead of (1 − cos θ)^5.",
+        ],
+    },
+    TaskInfo {
+        id: "cosine_sample",
+        title: "Cosine-weighted hemisphere sampling",
+        section: "§2.7",
+        points: 8,
+        needs: &[],
+        hints: &[
+            "The target density is cos θ / π per steradian. Its marginal in θ is \
+             2 sin θ cos θ, whose CDF is sin²θ; φ is uniform on [0, 2π).",
+            "Inverting gives cos θ = sqrt(1 − u1) (or sqrt(u1): both are uniform). \
+             Alternatively, sample a uniform point on the unit disk and lift it to the \
+             hemisphere (Malley's method).",
+            "The pdf must agree with the directions you produce: cos θ / π above the surface \
+             and 0 below it.",
+        ],
+    },
+    TaskInfo {
+        id: "smith_g1",
+        title: "GGX Smith masking G1",
+        section: "§3.2",
+        points: 6,
+        needs: &[],
+        hints: &[
+            "G1 = 1 / (1 + Λ), with Λ = (−1 + sqrt(1 + α² tan²θ)) / 2 for GGX.",
+            "A direction below the surface is fully masked: return 0 when cos θ ≤ 0 (the \
+             worksheet's formula goes negative there).",
+            "For tiny α² tan²θ the subtraction −1 + sqrt(1 + a) loses every digit in f32. \
+             Rewrite it as a / (1 + sqrt(1 + a)), or use the cosine form \
+             2 cos θ / (cos θ + sqrt(α² + (1 − α²) cos²θ)).",
+        ],
+    },
+    TaskInfo {
+        id: "cook_torrance",
+        title: "Cook-Torrance microfacet BRDF",
+        section: "§3.1, §3.3, §3.4",
+        points: 10,
+        needs: &[TaskId::SmithG1, TaskId::AnisoNdf],
+        hints: &[
+            "f = F(wo·h) D(h) G1(wo) G1(wi) / (4 cos θo cos θi), with h the normalised sum of \
+             wo and wi. F is Schlick's curve with the RGB reflectance f0.",
+            "Return 0 when either direction is at or below the horizon; that also guards the \
+             division.",
+            "Call t.aniso_ndf(h, alpha_x, alpha_y) for D. For G1 with anisotropic roughness, \
+             pass the roughness projected onto the direction's azimuth: \
+             crate::bsdf::projected_alpha(w, alpha_x, alpha_y).",
+        ],
+    },
+    TaskInfo {
+        id: "aniso_ndf",
+        title: "Anisotropic GGX normal distribution",
+        section: "§4.1",
+        points: 6,
+        needs: &[],
+        hints: &[
+            "D(h) = 1 / (π αx αy cos⁴θh (1 + tan²θh (cos²φh/αx² + sin²φh/αy²))²).",
+            "In Cartesian form this is 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²), which needs \
+             no trigonometry and stays accurate as α → 0 in f32.",
+            "h below the surface (h.z ≤ 0) has density 0.",
+        ],
+    },
+    TaskInfo {
+        id: "phong",
+        title: "Phong BRDF and a reciprocity test",
+        section: "§4.2",
+        points: 6,
+        needs: &[TaskId::Reflect],
+        hints: &[
+            "The lobe is centred on the mirror of wi; evaluate max(0, r·wo)^n so a negative \
+             cosine never reaches powf (a fractional power of a negative number is NaN).",
+            "For the test, draw random pairs of directions above the surface and compare \
+             f(wi, wo) with f(wo, wi). Report the largest relative difference.",
+            "Work out r(wi)·wo on paper: it is symmetric in wi and wo, so the Phong BRDF is \
+             reciprocal, whatever the worksheet says. The non-reciprocal model is the old \
+             Phong shading formula, whose implied BRDF divides by cos θi.",
+        ],
+    },
+    TaskInfo {
+        id: "kajiya_kay",
+        title: "Kajiya-Kay hair fibre model",
+        section: "§4.3",
+        points: 6,
+        needs: &[],
+        hints: &[
+            "Everything depends on the angles to the fibre tangent t: cos θ = t·w and \
+             sin θ = sqrt(1 − cos²θ), clamped.",
+            "Light leaving a cylinder by mirror reflection lies on a cone: t·wo = −t·wi. The \
+             cosine of the angle between wo and that cone is sin θi sin θo − cos θi cos θo.",
+            "Diffuse is kd sin θi; specular is ks max(0, cone cosine)^p. The worksheet's \
+             variant divides by sin θi sin θo and goes negative; do not use it.",
+        ],
+    },
+    TaskInfo {
+        id: "beckmann_ndf",
+        title: "Beckmann normal distribution",
+        section: "§3.4.3",
+        points: 4,
+        needs: &[],
+        hints: &[
+            "D(h) = exp(−tan²θh / α²) / (π α² cos⁴θh) for h above the surface.",
+            "At grazing h the exponential wins: return 0 when cos θh ≤ 0 or when cos⁴θh \
+             underflows, instead of computing 0 · ∞.",
+        ],
+    },
+    TaskInfo {
+        id: "ndf_sample",
+        title: "Sampling the GGX NDF and the half-vector Jacobian",
+        section: "§5.2",
+        points: 8,
+        needs: &[TaskId::AnisoNdf, TaskId::Reflect],
+        hints: &[
+            "Sample h with density D(h) cos θh (for GGX: tan θh = α sqrt(u1/(1−u1)), \
+             φ = 2π u2, stretched by αx, αy in the anisotropic case), then reflect wo about h.",
+            "The density of wi is the density of h times |dωh/dωi| = 1/(4 |wo·h|).",
+            "Reject (None / pdf 0) when wo·h ≤ 0 or when wi ends up below the surface.",
+        ],
+    },
+    TaskInfo {
+        id: "brdf_check",
+        title: "BRDF plausibility checker",
+        section: "§2.2, §2.6",
+        points: 6,
+        needs: &[TaskId::Phong],
+        hints: &[
+            "Three numbers: the smallest value, the worst relative asymmetry f(wi,wo) vs \
+             f(wo,wi) (t.reciprocity_gap does that part), and the largest directional albedo.",
+            "Estimate the albedo of a fixed wi by Monte Carlo over wo: mean of f cos θo / pdf \
+             with uniform hemisphere samples (crate::sampling::uniform_hemisphere).",
+            "Test incident directions near grazing too: that is where the worksheet's custom \
+             BRDF breaks energy conservation.",
+        ],
+    },
+    TaskInfo {
+        id: "path_trace",
+        title: "Path tracing with next-event estimation and Russian roulette",
+        section: "§5.3",
+        points: 15,
+        needs: &[TaskId::Mis],
+        hints: &[
+            "Radiance along a ray: emission where it lands (only when no light sampling could \
+             have found it), plus direct light there, plus the throughput-weighted radiance \
+             of one sampled continuation.",
+            "Russian roulette: continue with probability q and divide what you return by q, \
+             or the estimator loses energy.",
+        ],
+    },
+    TaskInfo {
+        id: "mis",
+        title: "Direct lighting by multiple importance sampling",
+        section: "§5.4",
+        points: 15,
+        needs: &[],
+        hints: &[
+            "Take one light sample and one BSDF sample, and weight each by the balance or \
+             power heuristic. Both pdfs must be per unit solid angle.",
+            "A light sample on an area light converts from area to solid angle by \
+             distance² / |cos θ at the light|.",
+        ],
+    },
+    TaskInfo {
+        id: "delta_tracking",
+        title: "Delta tracking in a heterogeneous medium",
+        section: "§6.3",
+        points: 12,
+        needs: &[],
+        hints: &[
+            "Step by exponential distances drawn with the majorant, with fresh random numbers \
+             at every step; accept a tentative collision with probability σt(x)/σ̄.",
+            "Report an escape as an escape, not as an absorption.",
+        ],
+    },
+];
+
+/// Generates the [`Tasks`] trait and its implementations from one list of task functions.
+///
+/// Each entry is `module: Variant { fn name(args) -> Ret; … }`: the file
+/// `exercises/module.rs` (and `solutions/module.rs`) defines each listed function with the
+/// same signature, and `Variant` is its [`TaskId`]. A function written `fn name(@t, args)`
+/// takes the implementation as its first argument (`t: &impl Tasks`) so it can call other
+/// tasks.
+macro_rules! tasks {
+    ($(
+        $module:ident : $variant:ident {
+            $(
+                $(#[$doc:meta])*
+                fn $name:ident ( $(@ $ctx:ident ,)? $($arg:ident : $ty:ty),* $(,)? ) -> $ret:ty;
+            )+
+        }
+    )+) => {
+        /// Every task function of the worksheet: the interface the renderer, the grader
+        /// and the convergence study are generic over.
+        ///
+        /// Conventions are those of [`crate::worksheet`]: directions point away from the
+        /// surface; in the local frame the normal is +z.
+        pub trait Tasks: Sync {
+            $($(
+                $(#[$doc])*
+                fn $name(&self, $($arg: $ty),*) -> $ret;
+            )+)+
+        }
+
+        impl Tasks for crate::implementation::Student {
+            $($(
+                fn $name(&self, $($arg: $ty),*) -> $ret {
+                    crate::exercises::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                }
+            )+)+
+        }
+
+        #[cfg(feature = "solutions")]
+        impl Tasks for crate::implementation::Reference {
+            $($(
+                fn $name(&self, $($arg: $ty),*) -> $ret {
+                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                }
+            )+)+
+        }
+
+        #[cfg(feature = "solutions")]
+        impl Tasks for crate::implementation::Mixed {
+            $($(
+                fn $name(&self, $($arg: $ty),*) -> $ret {
+                    if self.student().contains(TaskId::$variant) {
+                        crate::exercises::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                    } else {
+                        crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                    }
+                }
+            )+)+
+        }
+
+        /// The trait functions that belong to each task, for messages and coverage checks.
+        pub fn task_functions(task: TaskId) -> &'static [&'static str] {
+            match task {
+                $(TaskId::$variant => &[$(stringify!($name)),+],)+
+                #[allow(unreachable_patterns)]
+                _ => &[],
+            }
+        }
+    };
+}
+
+tasks! {
+    reflect: Reflect {
+        /// Mirror reflection of `wo` about the normal `n` (world or local; `n` need not have
+        /// unit length). Both `wo` and the result point away from the surface.
+        fn reflect(wo: Vec3, n: Vec3) -> Vec3;
+    }
+    refract_stack: RefractStack {
+        /// Refraction of `wi` (pointing away from the surface on the incident side) through an
+        /// interface with normal `n` on the incident side (need not be unit), from index
+        /// `eta_i` into `eta_t`. Returns the unit transmitted direction, pointing away from
+        /// the surface on the far side, or `None` under total internal reflection.
+        fn refract(wi: Vec3, n: Vec3, eta_i: f32, eta_t: f32) -> Option<Vec3>;
+        /// The critical angle in radians for light going from `eta_i` into `eta_t`, or `None`
+        /// when total internal reflection cannot happen (`eta_i <= eta_t`).
+        fn critical_angle(eta_i: f64, eta_t: f64) -> Option<f64>;
+        /// Follows a ray entering `stack` at `theta_deg` degrees from the normal through
+        /// every interface; see [`StackReport`] for what to fill in.
+        fn refract_stack(@t, theta_deg: f64, stack: &LayerStack) -> StackReport;
+    }
+    fresnel_schlick: FresnelSchlick {
+        /// Reflectance at normal incidence of the interface between `eta_i` and `eta_t`.
+        fn schlick_r0(eta_i: f32, eta_t: f32) -> f32;
+        /// Schlick's approximation of the unpolarised reflectance for light arriving at
+        /// `cos_theta_i` (≥ 0, on the incident side) from `eta_i` into `eta_t`: uses the
+        /// transmitted cosine when `eta_i > eta_t`, returns 1 under total internal reflection
+        /// and 0 when the indices are equal.
+        fn fresnel_schlick(@t, cos_theta_i: f32, eta_i: f32, eta_t: f32) -> f32;
+    }
+    cosine_sample: CosineSample {
+        /// A direction in the local frame (z = normal), distributed with density cos θ / π,
+        /// from a uniform point `u` in [0, 1)².
+        fn cosine_sample(u: Vec2) -> Vec3;
+        /// The density per steradian with which [`Tasks::cosine_sample`] produces the local
+        /// direction `w` (0 below the surface).
+        fn cosine_pdf(w: Vec3) -> f32;
+    }
+    smith_g1: SmithG1 {
+        /// GGX Smith masking G1 of the local direction `w` for isotropic roughness `alpha`;
+        /// in [0, 1], and 0 for `w` at or below the horizon.
+        fn smith_g1(w: Vec3, alpha: f32) -> f32;
+    }
+    cook_torrance: CookTorrance {
+        /// The Cook-Torrance BRDF `F D G1(wo) G1(wi) / (4 cos θo cos θi)` for local
+        /// directions `wo`, `wi`, anisotropic GGX roughness `alpha_x` (along local x) and
+        /// `alpha_y`, and Schlick Fresnel with normal-incidence reflectance `f0` (RGB).
+        /// 0 when either direction is at or below the horizon.
+        fn cook_torrance(@t, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32, f0: Vec3) -> Vec3;
+    }
+    aniso_ndf: AnisoNdf {
+        /// The anisotropic GGX (Trowbridge-Reitz) density of microfacet normals `h` (local
+        /// frame, unit length) with roughness `alpha_x` along local x and `alpha_y` along
+        /// local y, per steradian of `h`; normalised so that ∫ D(h) cos θh dωh = 1.
+        fn aniso_ndf(h: Vec3, alpha_x: f32, alpha_y: f32) -> f32;
+    }
+    phong: Phong {
+        /// The energy-normalised Phong BRDF described by [`PhongParams`], for local
+        /// directions `wo`, `wi`; 0 when either is below the surface.
+        fn phong(@t, wo: Vec3, wi: Vec3, params: &PhongParams) -> Vec3;
+        /// A numerical reciprocity test: the largest relative difference
+        /// `|f(a, b) − f(b, a)| / max(|f(a, b)|, |f(b, a)|)` over `pairs` random pairs of
+        /// local directions in the upper hemisphere (pairs where both values are 0 count 0).
+        fn reciprocity_gap(brdf: &dyn Fn(Vec3, Vec3) -> f32, sampler: &mut Sampler, pairs: usize) -> f32;
+    }
+    kajiya_kay: KajiyaKay {
+        /// The Kajiya-Kay fibre shading value for directions `wo`, `wi` (pointing away from
+        /// the fibre) and unit fibre `tangent`, all in one frame: diffuse `kd sin(t, wi)` plus
+        /// specular `ks max(0, sin θi sin θo − cos θi cos θo)^p`. Non-negative and finite.
+        fn kajiya_kay(wo: Vec3, wi: Vec3, tangent: Vec3, params: &KajiyaKayParams) -> Vec3;
+    }
+    beckmann_ndf: BeckmannNdf {
+        /// The Beckmann density of microfacet normals `h` (local frame) with roughness
+        /// `alpha`; 0 for `h` at or below the horizon.
+        fn beckmann_ndf(h: Vec3, alpha: f32) -> f32;
+    }
+    ndf_sample: NdfSample {
+        /// Samples an incident direction `wi` for the outgoing direction `wo` (local frame)
+        /// by drawing a microfacet normal with density `D(h) cos θh` (anisotropic GGX) from
+        /// `u` and reflecting `wo` about it. `None` when `wo·h ≤ 0` or `wi` is below the
+        /// surface.
+        fn ndf_sample(@t, wo: Vec3, alpha_x: f32, alpha_y: f32, u: Vec2) -> Option<Vec3>;
+        /// The density per steradian of `wi` under [`Tasks::ndf_sample`]:
+        /// `D(h) cos θh / (4 |wo·h|)`, 0 where sampling cannot produce `wi`.
+        fn ndf_pdf(@t, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> f32;
+    }
+    brdf_check: BrdfCheck {
+        /// Measures positivity, reciprocity and energy conservation of `brdf(wi, wo)`
+        /// (local directions) with `samples` random directions; see [`PlausibilityReport`].
+        fn brdf_check(@t, brdf: &dyn Fn(Vec3, Vec3) -> f32, sampler: &mut Sampler, samples: usize) -> PlausibilityReport;
+    }
+}
