@@ -1,6 +1,8 @@
 //! The `pbrlab` command line: one file per subcommand.
 
 mod hint;
+mod needs;
+pub mod render;
 mod tasks;
 
 use clap::{Parser, Subcommand};
@@ -21,6 +23,10 @@ pub enum Command {
     Tasks(tasks::Args),
     /// Show the hints of a task, one level at a time.
     Hint(hint::Args),
+    /// Render a scene to EXR and PNG.
+    Render(render::Args),
+    /// Show the tasks and subsystems a scene needs.
+    Needs(needs::Args),
 }
 
 /// Runs the command line.
@@ -28,6 +34,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
-        None => tasks::run(tasks::Args::default()),
+        Some(Command::Render(args)) => render::run(args),
+        Some(Command::Needs(args)) => needs::run(args),
+        None => render::run(render::Args::default()),
     }
 }
