@@ -13,7 +13,7 @@ const INCIDENT_THETA_DEG: [f32; 8] = [0.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 8
 /// Positivity, reciprocity and energy conservation of `brdf(wi, wo)`, measured.
 ///
 /// - Reciprocity: [`Tasks::reciprocity_gap`] over `samples` random pairs.
-/// - Energy: for each polar angle in [`INCIDENT_THETA_DEG`] (at a random azimuth, for
+/// - Energy: for each polar angle in `INCIDENT_THETA_DEG` (at a random azimuth, for
 ///   anisotropic BRDFs), the albedo `∫ f(wi, wo) cos θo dωo` is estimated with `samples`
 ///   uniform-hemisphere directions `wo`, stratified in `cos θo` (the first coordinate of
 ///   [`uniform_hemisphere`]) to keep the estimate of a smooth BRDF within a fraction of a
