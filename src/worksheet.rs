@@ -13,7 +13,7 @@
 //! - **Radiance** is linear RGB. Angles in the API are radians unless a name says `_deg`.
 //!
 //! # How an implementation is put together
-//! The [`tasks!`] invocation at the bottom of this file lists every task function once. It
+//! The `tasks!` invocation at the bottom of this file lists every task function once. It
 //! generates the [`Tasks`] trait and its implementations: [`crate::implementation::Student`]
 //! (the code in `exercises/`), `Reference` (the code in `solutions/`) and `Mixed` (a
 //! per-task choice). Task functions that build on other tasks take `t: &impl Tasks` as their
