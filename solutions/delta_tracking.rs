@@ -11,7 +11,7 @@ pub fn delta_tracking(
     sampler: &mut Sampler,
 ) -> FreeFlight {
     let majorant = medium.majorant();
-    if !(majorant > 0.0) {
+    if majorant.is_nan() || majorant <= 0.0 {
         return FreeFlight::Escape;
     }
     let mut t = 0.0f32;

@@ -41,7 +41,7 @@ pub fn path_trace(
     let mut weight = bounce.weight;
     if scene.settings().roulette_applies(depth) {
         let q = weight.max_element().min(0.95);
-        if !(q > 0.0) || sampler.next_1d() >= q {
+        if (q.is_nan() || q <= 0.0) || sampler.next_1d() >= q {
             return radiance;
         }
         weight /= q;

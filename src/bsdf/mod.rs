@@ -11,7 +11,7 @@ mod sample;
 mod surface;
 
 pub use material::{FresnelModel, HemisphereSampling, Material};
-pub use microfacet::projected_alpha;
+pub use microfacet::{MIN_ALPHA, projected_alpha};
 pub use params::{KajiyaKayParams, PhongParams};
 pub use plausibility::PlausibilityReport;
 pub use sample::BsdfSample;

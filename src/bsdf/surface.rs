@@ -143,7 +143,7 @@ impl<'a> Bsdf<'a> {
                         (uniform_hemisphere(u), uniform_hemisphere_pdf())
                     }
                 };
-                if !(pdf > 0.0) || wi_f.z <= 0.0 || wo_f.z <= 0.0 {
+                if (pdf.is_nan() || pdf <= 0.0) || wi_f.z <= 0.0 || wo_f.z <= 0.0 {
                     return None;
                 }
                 Some(BsdfSample {
@@ -205,7 +205,7 @@ impl<'a> Bsdf<'a> {
                 }
                 let wi_f = t.ndf_sample(wo_f, *alpha_x, *alpha_y, sampler.next_2d())?;
                 let pdf = t.ndf_pdf(wo_f, wi_f, *alpha_x, *alpha_y);
-                if !(pdf > 0.0) || wi_f.z <= 0.0 {
+                if (pdf.is_nan() || pdf <= 0.0) || wi_f.z <= 0.0 {
                     return None;
                 }
                 let f = t.cook_torrance(wo_f, wi_f, *alpha_x, *alpha_y, *f0) * wi_f.z;
@@ -234,7 +234,7 @@ impl<'a> Bsdf<'a> {
                 }
                 let pdf = (1.0 - p_spec) * t.cosine_pdf(wi_f)
                     + p_spec * phong_lobe::pdf(r, params.exponent, wi_f);
-                if !(pdf > 0.0) {
+                if pdf.is_nan() || pdf <= 0.0 {
                     return None;
                 }
                 let f = t.phong(wo_f, wi_f, params) * wi_f.z;

@@ -45,7 +45,7 @@ impl Hit {
     pub fn spawn_to(&self, q: Vec3) -> (Ray, f32) {
         let d = q - self.p;
         let dist = d.length();
-        if !(dist > self.epsilon) {
+        if dist.is_nan() || dist <= self.epsilon {
             return (Ray::new(self.p, self.n), 0.0);
         }
         let dir = d / dist;

@@ -29,7 +29,7 @@ impl Quad {
     pub fn new(origin: Vec3, edge1: Vec3, edge2: Vec3, shape: ShapeId) -> Option<Self> {
         let cross = edge1.cross(edge2);
         let area = cross.length();
-        if !(area > 0.0) || !area.is_finite() {
+        if !area.is_finite() || area <= 0.0 {
             return None;
         }
         let n = cross / area;

@@ -123,7 +123,7 @@ fn roulette(applies: bool, beta: &mut Vec3, sampler: &mut Sampler) -> bool {
         return true;
     }
     let q = beta.max_element().min(0.95);
-    if !(q > 0.0) || sampler.next_1d() >= q {
+    if (q.is_nan() || q <= 0.0) || sampler.next_1d() >= q {
         return false;
     }
     *beta /= q;
@@ -156,7 +156,7 @@ fn next_event<T: Tasks>(
             let d = p - x;
             let dist2 = d.length_squared();
             let dist = dist2.sqrt();
-            if !(dist > 0.0) || !(pdf_area > 0.0) {
+            if (dist.is_nan() || dist <= 0.0) || (pdf_area.is_nan() || pdf_area <= 0.0) {
                 return Vec3::ZERO;
             }
             let wi = d / dist;
@@ -169,7 +169,7 @@ fn next_event<T: Tasks>(
         LightSample::Point { p, intensity, prob } => {
             let d = p - x;
             let dist2 = d.length_squared();
-            if !(dist2 > 0.0) || !(prob > 0.0) {
+            if (dist2.is_nan() || dist2 <= 0.0) || (prob.is_nan() || prob <= 0.0) {
                 return Vec3::ZERO;
             }
             let dist = dist2.sqrt();
@@ -177,7 +177,7 @@ fn next_event<T: Tasks>(
             (d / dist, dist, intensity / dist2, prob)
         }
         LightSample::Environment { wi, radiance, pdf } => {
-            if !(pdf > 0.0) {
+            if pdf.is_nan() || pdf <= 0.0 {
                 return Vec3::ZERO;
             }
             (wi, f32::INFINITY, radiance, pdf)

@@ -21,7 +21,7 @@ pub fn ratio_tracking(
     sampler: &mut Sampler,
 ) -> f32 {
     let majorant = medium.majorant();
-    if !(majorant > 0.0) {
+    if majorant.is_nan() || majorant <= 0.0 {
         return 1.0;
     }
     let mut t = 0.0f32;

@@ -33,6 +33,12 @@ fn write_atomically(
     write(&mut writer)?;
     writer.flush()?;
     writer.get_ref().sync_all()?;
+    // Temporary files are private (0600); an image is not.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(0o644))?;
+    }
     tmp.persist(path)
         .with_context(|| format!("cannot write {}", path.display()))?;
     Ok(())

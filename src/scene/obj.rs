@@ -25,7 +25,6 @@ pub fn load_obj(path: &Path, transform: &Mat4) -> Result<ObjTriangles, SceneErro
         triangulate: false,
         ignore_points: true,
         ignore_lines: true,
-        ..Default::default()
     };
     let (models, _materials) = tobj::load_obj_buf(&mut BufReader::new(file), &options, |_| {
         // Materials come from the scene file; .mtl files are not read.
