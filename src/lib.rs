@@ -20,6 +20,7 @@ pub mod implementation;
 pub mod math;
 pub mod optics;
 pub mod sampling;
+pub mod stability;
 pub mod task_set;
 pub mod worksheet;
 

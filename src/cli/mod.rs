@@ -1,6 +1,7 @@
 //! The `pbrlab` command line: one file per subcommand.
 
 mod hint;
+mod stability;
 mod tasks;
 
 use clap::{Parser, Subcommand};
@@ -21,6 +22,8 @@ pub enum Command {
     Tasks(tasks::Args),
     /// Show the hints of a task, one level at a time.
     Hint(hint::Args),
+    /// Run every task on stiff and extreme inputs (grazing angles, α → 0, the critical angle, …).
+    Stability(stability::Args),
 }
 
 /// Runs the command line.
@@ -28,6 +31,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
+        Some(Command::Stability(args)) => stability::run(args),
         None => tasks::run(tasks::Args::default()),
     }
 }
