@@ -13,7 +13,7 @@
 //! - **Radiance** is linear RGB. Angles in the API are radians unless a name says `_deg`.
 //!
 //! # How an implementation is put together
-//! The [`tasks!`] invocation at the bottom of this file lists every task function once. It
+//! The `tasks!` invocation at the bottom of this file lists every task function once. It
 //! generates the [`Tasks`] trait and its implementations: [`crate::implementation::Student`]
 //! (the code in `exercises/`), `Reference` (the code in `solutions/`) and `Mixed` (a
 //! per-task choice). Task functions that build on other tasks take `t: &impl Tasks` as their
@@ -153,6 +153,9 @@ pub static TASKS: [TaskInfo; 15] = [
              should get (−0.6, 0.8, 0), still above the surface.",
             "The normal you are given may not have unit length. Normalise it first, or the \
              component along n is scaled by |n|².",
+            "The worksheet's §1.1 formula wo − 2(wo·n)n is for a direction travelling towards \
+             the surface; in our convention (pointing away) it returns a vector below the \
+             surface. The two formulas are negatives of each other.",
         ],
     },
     TaskInfo {
@@ -175,6 +178,13 @@ pub static TASKS: [TaskInfo; 15] = [
             "Transmitted intensity multiplies (1 − R) over the interfaces. Use your \
              fresnel_schlick for one column and crate::optics::fresnel_dielectric_f64 for the \
              exact one.",
+            "With η = eta_i/eta_t, c = wi·n̂ and cos θt from the clamped square root, the \
+             transmitted direction is −η wi + (η c − cos θt) n̂: the tangential part scales \
+             by η and flips side, the normal part points into the second medium.",
+            "When the stack stops at TIR on interface k: theta has k + 1 entries, the \
+             reflectances k + 1 (the last is 1), the per-slab shifts one entry per slab \
+             entered, and both transmitted intensities are 0. A ray grazing out of a slab \
+             exactly at the critical angle counts as TIR.",
         ],
     },
     TaskInfo {
@@ -191,6 +201,9 @@ pub static TASKS: [TaskInfo; 15] = [
              reflectance is 1.",
             "When the two indices are equal nothing reflects, at any angle. Make sure your code \
              returns 0 there instead of (1 − cos θ)^5.",
+            "Dense to less dense: sin²θt = (eta_i/eta_t)² (1 − cos²θi). If that is ≥ 1, \
+             return 1; otherwise use cos θt = sqrt(1 − sin²θt) in Schlick's curve. Clamp the \
+             cosine to ≤ 1 so 1 − cos never goes negative.",
         ],
     },
     TaskInfo {
@@ -222,6 +235,9 @@ pub static TASKS: [TaskInfo; 15] = [
             "For tiny α² tan²θ the subtraction −1 + sqrt(1 + a) loses every digit in f32. \
              Rewrite it as a / (1 + sqrt(1 + a)), or use the cosine form \
              2 cos θ / (cos θ + sqrt(α² + (1 − α²) cos²θ)).",
+            "Check the limits: α = 0 gives 1 above the horizon (and must not give NaN at the \
+             horizon), α = 1 and cos θ = 0.5 give 2/3, and cos θ = 1e-8 with α = 0.5 gives \
+             about 4e-8.",
         ],
     },
     TaskInfo {
@@ -238,6 +254,12 @@ pub static TASKS: [TaskInfo; 15] = [
             "Call t.aniso_ndf(h, alpha_x, alpha_y) for D. For G1 with anisotropic roughness, \
              pass the roughness projected onto the direction's azimuth: \
              crate::bsdf::projected_alpha(w, alpha_x, alpha_y).",
+            "Fresnel is evaluated at the microfacet: its cosine is wo·h (equal to wi·h), not \
+             cos θo. crate::optics::schlick_weight(wo·h) gives (1 − wo·h)^5, and \
+             F = f0 + (1 − f0) · that, per channel.",
+            "Check: wi = n, α = 0.5, f0 = 0.04, wo at 89.999° from n gives about 0.008570 \
+             (with G = 1 it would be 123). And |wo + wi|² can be tiny for nearly opposite \
+             directions: return 0 instead of normalising it.",
         ],
     },
     TaskInfo {
@@ -250,7 +272,10 @@ pub static TASKS: [TaskInfo; 15] = [
             "D(h) = 1 / (π αx αy cos⁴θh (1 + tan²θh (cos²φh/αx² + sin²φh/αy²))²).",
             "In Cartesian form this is 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²), which needs \
              no trigonometry and stays accurate as α → 0 in f32.",
-            "h below the surface (h.z ≤ 0) has density 0.",
+            "h below the surface (h.z ≤ 0) has density 0, and α = 0 is a delta: raise the \
+             roughnesses to crate::bsdf::MIN_ALPHA first.",
+            "Check: h = (0.5, 0.5, √2/2) gives 0.2037183 for α = (0.5, 0.5) and 0.0048006 \
+             for α = (0.1, 1.0); α = (1, 1) gives 1/π for every h above the surface.",
         ],
     },
     TaskInfo {
@@ -294,6 +319,9 @@ pub static TASKS: [TaskInfo; 15] = [
             "D(h) = exp(−tan²θh / α²) / (π α² cos⁴θh) for h above the surface.",
             "At grazing h the exponential wins: return 0 when cos θh ≤ 0 or when cos⁴θh \
              underflows, instead of computing 0 · ∞.",
+            "Check with α = 0.1: θh = 0 gives 100/π = 31.8309886; θh = 30° gives \
+             1.889056e-13; θh = 42.5° (the half vector for a view at 85°, not 45°) gives \
+             3.683271e-35.",
         ],
     },
     TaskInfo {
@@ -303,10 +331,14 @@ pub static TASKS: [TaskInfo; 15] = [
         points: 8,
         needs: &[TaskId::AnisoNdf, TaskId::Reflect],
         hints: &[
-            "Sample h with density D(h) cos θh (for GGX: tan θh = α sqrt(u1/(1−u1)), \
-             φ = 2π u2, stretched by αx, αy in the anisotropic case), then reflect wo about h.",
+            "Two steps: draw a microfacet normal h, then wi = t.reflect(wo, h). D(h) cos θh \
+             integrates to 1 over the hemisphere, so it is a density for h: invert its CDF in \
+             θh, with φh uniform.",
+            "Isotropic GGX inverts to tan θh = α sqrt(u1/(1 − u1)), φh = 2π u2. For αx ≠ αy, \
+             build the normal for α = 1, scale its x by αx and its y by αy, and normalise.",
             "The density of wi is the density of h times |dωh/dωi| = 1/(4 |wo·h|).",
-            "Reject (None / pdf 0) when wo·h ≤ 0 or when wi ends up below the surface.",
+            "Reject (None / pdf 0) when wo·h ≤ 0 or when wi ends up below the surface; \
+             ndf_pdf must be 0 for every wi the sampler cannot return.",
         ],
     },
     TaskInfo {
@@ -322,6 +354,8 @@ pub static TASKS: [TaskInfo; 15] = [
              with uniform hemisphere samples (crate::sampling::uniform_hemisphere).",
             "Test incident directions near grazing too: that is where the worksheet's custom \
              BRDF breaks energy conservation.",
+            "f32::min and f32::max ignore NaN. A BRDF that returns NaN must come out \
+             implausible, so let a NaN value win when you take the minimum and the maximum.",
         ],
     },
     TaskInfo {

@@ -5,6 +5,6 @@ mod microfacet;
 mod params;
 mod plausibility;
 
-pub use microfacet::projected_alpha;
+pub use microfacet::{MIN_ALPHA, projected_alpha};
 pub use params::{KajiyaKayParams, PhongParams};
 pub use plausibility::PlausibilityReport;

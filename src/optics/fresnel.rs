@@ -22,3 +22,15 @@ pub fn fresnel_dielectric_f64(cos_theta_i: f64, eta_i: f64, eta_t: f64) -> f64 {
 pub fn fresnel_dielectric(cos_theta_i: f32, eta_i: f32, eta_t: f32) -> f32 {
     fresnel_dielectric_f64(cos_theta_i as f64, eta_i as f64, eta_t as f64) as f32
 }
+
+/// Schlick's angular weight `(1 − cos θ)^5`, with `cos_theta` clamped to [0, 1] first so a
+/// cosine that rounding pushed past 1 (or a slightly negative one) cannot leave [0, 1].
+///
+/// Schlick's approximation is `R0 + (1 − R0) · schlick_weight(cos θ)`; the `fresnel_schlick`
+/// and `cook_torrance` tasks both build on it.
+#[inline]
+pub fn schlick_weight(cos_theta: f32) -> f32 {
+    let m = (1.0 - cos_theta).clamp(0.0, 1.0);
+    let m2 = m * m;
+    m2 * m2 * m
+}

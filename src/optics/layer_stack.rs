@@ -44,9 +44,12 @@ impl LayerStack {
 ///
 /// Angles are measured from the common normal, in degrees. Vectors are indexed by medium
 /// (`theta`), by slab (`perpendicular_shift`, `interface_offset`) or by interface
-/// (`reflectance_*`). When total internal reflection stops the ray at interface `k`,
-/// `tir_at = Some(k)`, `theta` holds only the media reached, the reflectance of interface
-/// `k` is 1, and both transmitted intensities are 0.
+/// (`reflectance_*`), and hold entries only for what the ray reached. When total internal
+/// reflection stops the ray at interface `k` (decided on `sin²θt ≥ 1`, so exactly at the
+/// critical angle too), `tir_at = Some(k)`, `theta` holds the `k + 1` media reached, the
+/// per-slab vectors the `k` slabs entered (the last one up to the point of reflection), the
+/// reflectance vectors `k + 1` entries of which the last is 1, and both transmitted
+/// intensities are 0.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct StackReport {
     /// Angle from the normal in each medium reached, in degrees (`theta[0]` is the input).

@@ -4,5 +4,5 @@
 mod fresnel;
 mod layer_stack;
 
-pub use fresnel::{fresnel_dielectric, fresnel_dielectric_f64};
+pub use fresnel::{fresnel_dielectric, fresnel_dielectric_f64, schlick_weight};
 pub use layer_stack::{LayerStack, Slab, StackReport};
