@@ -15,10 +15,12 @@
 
 pub mod bsdf;
 pub mod cli;
+pub mod converge;
 pub mod grade;
 pub mod implementation;
 pub mod math;
 pub mod optics;
+pub mod panic_hook;
 pub mod sampling;
 pub mod stability;
 pub mod task_set;

@@ -1,5 +1,6 @@
 //! The `pbrlab` command line: one file per subcommand.
 
+mod converge;
 mod hint;
 mod stability;
 mod tasks;
@@ -24,6 +25,8 @@ pub enum Command {
     Hint(hint::Args),
     /// Run every task on stiff and extreme inputs (grazing angles, α → 0, the critical angle, …).
     Stability(stability::Args),
+    /// Error against run time for each sampling strategy: CSV, log-log plot and slopes.
+    Converge(converge::Args),
 }
 
 /// Runs the command line.
@@ -32,6 +35,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Stability(args)) => stability::run(args),
+        Some(Command::Converge(args)) => converge::run(args),
         None => tasks::run(tasks::Args::default()),
     }
 }

@@ -7,11 +7,11 @@ use super::expect::Expect;
 use super::value::Value;
 use super::verdict::Verdict;
 use crate::implementation::{is_todo_panic, panic_message};
+use crate::panic_hook::QuietPanics;
 use crate::worksheet::{TaskId, Tasks};
 use serde::Serialize;
-use std::panic::{AssertUnwindSafe, PanicHookInfo, catch_unwind};
+use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::mpsc::{self, RecvTimeoutError};
-use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 /// The time limit per case that the command line uses unless told otherwise. Every case
@@ -162,41 +162,5 @@ fn shown<T>(case: &Case<T>, value: &Value) -> String {
             Value::Record(kept).to_string()
         }
         _ => value.to_string(),
-    }
-}
-
-/// Serialises users of the process-wide panic hook.
-static HOOK_LOCK: Mutex<()> = Mutex::new(());
-
-type Hook = Box<dyn Fn(&PanicHookInfo<'_>) + Sync + Send + 'static>;
-
-/// Silences the panic hook while alive and restores the previous one when dropped.
-///
-/// Not [`crate::implementation::catch_quietly`] per case: a case that hangs would never
-/// restore the hook it replaced, and concurrent swaps could lose the original hook.
-struct QuietPanics {
-    previous: Option<Hook>,
-    _lock: MutexGuard<'static, ()>,
-}
-
-impl QuietPanics {
-    fn new() -> Self {
-        let lock = HOOK_LOCK
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner());
-        let previous = std::panic::take_hook();
-        std::panic::set_hook(Box::new(|_| {}));
-        Self {
-            previous: Some(previous),
-            _lock: lock,
-        }
-    }
-}
-
-impl Drop for QuietPanics {
-    fn drop(&mut self) {
-        if let Some(previous) = self.previous.take() {
-            std::panic::set_hook(previous);
-        }
     }
 }
