@@ -2,6 +2,10 @@
 //! 1/spp, a biased one flattens, and student code that is not written yet fails its
 //! strategy without stopping the others.
 
+#[cfg(feature = "solutions")]
+#[allow(dead_code)]
+mod stability_support;
+
 use glam::Vec3;
 use indicatif::ProgressBar;
 use pbrlab::converge::builtin::{builtin, irradiance};
@@ -133,4 +137,55 @@ fn a_strategy_on_unwritten_student_code_fails_alone() {
     );
     assert!(points.iter().all(|p| p.strategy == "uniform"));
     assert_eq!(points.len(), 3);
+}
+
+#[cfg(feature = "solutions")]
+fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
+    name: &str,
+    t: T,
+    max_spp: u32,
+) -> Vec<Summary> {
+    let study = builtin(name, t).unwrap();
+    let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
+    let config = StudyConfig { max_spp, ..CONFIG };
+    let result = run_study(
+        &strategies,
+        &study.reference,
+        &config,
+        &ProgressBar::hidden(),
+    )
+    .unwrap();
+    assert!(result.failures.is_empty(), "{:?}", result.failures);
+    summarise(&result.points)
+}
+
+#[cfg(feature = "solutions")]
+#[test]
+fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_flattens() {
+    use pbrlab::implementation::Reference;
+    use stability_support::{Flaw, Flawed};
+
+    let summaries = run_builtin("microfacet_albedo", Reference, 1024);
+    for s in &summaries {
+        let slope = s.slope_spp.unwrap().slope;
+        // 60 pixels: the relMSE of one run scatters by about 20 %, hence the margin.
+        assert!((slope + 1.0).abs() < 0.25, "{}: slope {slope}", s.strategy);
+        assert_eq!(s.non_finite, 0, "{}", s.strategy);
+    }
+    let final_of = |name| summary(&summaries, name).final_rel_mse;
+    assert!(
+        final_of("mis_balance") < final_of("ndf") && final_of("mis_balance") < final_of("uniform")
+    );
+
+    let summaries = run_builtin("microfacet_albedo", Flawed(Flaw::NdfPdfNoJacobian), 1024);
+    for s in &summaries {
+        let uses_ndf_pdf = !matches!(s.strategy.as_str(), "uniform" | "cosine");
+        assert_eq!(
+            s.flattening(),
+            uses_ndf_pdf,
+            "{}: {:?}",
+            s.strategy,
+            s.slope_spp
+        );
+    }
 }

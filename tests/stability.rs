@@ -200,6 +200,13 @@ fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
             Flaw::NdfPdfUnguarded,
             vec![("ndf_pdf/opposite", NaN), ("ndf_pdf/wi_below", WrongValue)],
         ),
+        (
+            Flaw::NdfPdfNoJacobian,
+            vec![
+                ("ndf_pdf/grazing_pair", WrongValue),
+                ("ndf_pdf/alpha_1e-4_mirror", WrongValue),
+            ],
+        ),
     ]
 }
 

@@ -1,6 +1,6 @@
 //! `pbrlab converge`: error against run time for every strategy a study supports.
 
-use crate::converge::builtin::{BUILTIN, Study, builtin};
+use crate::converge::builtin::builtin;
 use crate::converge::csv::write_csv;
 use crate::converge::plot::plot_error_vs_time;
 use crate::converge::{Strategy, StudyConfig, Summary, run_study, summarise};
@@ -14,7 +14,7 @@ use std::path::PathBuf;
 /// Arguments of `pbrlab converge`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// What to estimate: the name of a built-in study (`irradiance`).
+    /// What to estimate: a built-in study (`irradiance`, `microfacet_albedo`).
     pub scene: String,
     /// Whose code the strategies run.
     #[arg(long = "impl", value_enum, default_value = "student")]
@@ -51,20 +51,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
 }
 
-fn load<T: Tasks + Clone + Send + 'static>(scene: &str, tasks: T) -> anyhow::Result<Study> {
-    if let Some(study) = builtin(scene, tasks) {
-        return Ok(study);
-    }
-    let names: Vec<String> = BUILTIN
-        .iter()
-        .map(|(n, what)| format!("  {n}: {what}"))
-        .collect();
-    bail!(
-        "`{scene}` is not a built-in study; the built-in studies are:\n{}",
-        names.join("\n")
-    )
-}
-
 fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow::Result<()> {
     if args.min_spp == 0 || args.max_spp < args.min_spp {
         bail!(
@@ -73,7 +59,7 @@ fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow:
             args.max_spp
         );
     }
-    let study = load(&args.scene, tasks)?;
+    let study = builtin(&args.scene, tasks)?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     let config = StudyConfig {

@@ -45,6 +45,8 @@ pub enum Flaw {
     BeckmannUnguarded,
     /// `ndf_pdf` with no test of the directions.
     NdfPdfUnguarded,
+    /// `ndf_pdf` without the reflection Jacobian 1/(4 wo·h).
+    NdfPdfNoJacobian,
     /// `smith_g1` never returns.
     SmithHangs,
     /// `reflect` panics.
@@ -161,6 +163,7 @@ impl Tasks for Flawed {
     fn ndf_pdf(&self, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> f32 {
         match self.0 {
             Flaw::NdfPdfUnguarded => naive::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
+            Flaw::NdfPdfNoJacobian => naive::ndf_pdf_no_jacobian(self, wo, wi, alpha_x, alpha_y),
             _ => reference::ndf_sample::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
         }
     }

@@ -168,3 +168,16 @@ pub fn ndf_pdf(t: &impl Tasks, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -
     let h = (wo + wi).normalize();
     t.aniso_ndf(h, alpha_x, alpha_y) * h.z / (4.0 * wo.dot(h))
 }
+
+/// The density of h, D(h) cos θh, returned as the density of wi: the Jacobian
+/// 1/(4 wo·h) of the reflection is missing (a pdf in the wrong measure).
+pub fn ndf_pdf_no_jacobian(t: &impl Tasks, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> f32 {
+    if wo.z <= 0.0 || wi.z <= 0.0 {
+        return 0.0;
+    }
+    let h = (wo + wi).normalize();
+    if wo.dot(h) <= 0.0 {
+        return 0.0;
+    }
+    t.aniso_ndf(h, alpha_x, alpha_y) * h.z
+}
