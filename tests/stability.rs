@@ -201,6 +201,26 @@ fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
             vec![("ndf_pdf/opposite", NaN), ("ndf_pdf/wi_below", WrongValue)],
         ),
         (
+            Flaw::PathTraceNoDepthGuard,
+            vec![("path_trace/depth_zero", WrongValue)],
+        ),
+        (
+            Flaw::MisUnguarded,
+            vec![
+                ("mis/delta_bsdf", WrongValue),
+                ("mis/light_edge_on", NaN),
+                ("mis/shading_point_on_the_light", NaN),
+            ],
+        ),
+        (
+            Flaw::DeltaTrackingSheet,
+            vec![
+                ("delta_tracking/zero_majorant", WrongValue),
+                ("delta_tracking/empty_medium", WrongValue),
+                ("delta_tracking/empty_segment", WrongValue),
+            ],
+        ),
+        (
             Flaw::NdfPdfNoJacobian,
             vec![
                 ("ndf_pdf/grazing_pair", WrongValue),

@@ -22,6 +22,7 @@ pub mod catalogue;
 pub mod expect;
 pub mod inputs;
 pub mod runner;
+pub mod scenes;
 pub mod summary;
 pub mod value;
 pub mod verdict;

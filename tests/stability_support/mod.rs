@@ -5,10 +5,14 @@
 
 pub mod naive;
 
-use glam::{Vec2, Vec3};
-use pbrlab::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
+use glam::Vec3;
+use pbrlab::bsdf::{KajiyaKayParams, PhongParams};
+use pbrlab::geometry::{Hit, Ray};
+use pbrlab::integrator::{DirectLight, Heuristic, Segment};
+use pbrlab::medium::{FreeFlight, Medium};
 use pbrlab::optics::{LayerStack, StackReport};
 use pbrlab::sampling::Sampler;
+use pbrlab::scene::Scene;
 use pbrlab::solutions as reference;
 use pbrlab::worksheet::Tasks;
 use std::time::Duration;
@@ -47,13 +51,20 @@ pub enum Flaw {
     NdfPdfUnguarded,
     /// `ndf_pdf` without the reflection Jacobian 1/(4 wo·h).
     NdfPdfNoJacobian,
+    /// `path_trace` has no test for depth ≤ 0.
+    PathTraceNoDepthGuard,
+    /// `mis` converts pdfs and weights delta samples without guards.
+    MisUnguarded,
+    /// `delta_tracking` as on the worksheet (reused random numbers, escape as absorption).
+    DeltaTrackingSheet,
     /// `smith_g1` never returns.
     SmithHangs,
     /// `reflect` panics.
     ReflectPanics,
 }
 
-/// The reference with at most one [`Flaw`].
+/// The reference with at most one [`Flaw`]. Functions without a flaw come from the
+/// trait's reference defaults.
 #[derive(Clone, Copy, Debug)]
 pub struct Flawed(pub Flaw);
 
@@ -83,9 +94,6 @@ impl Tasks for Flawed {
             _ => reference::refract_stack::refract_stack(self, theta_deg, stack),
         }
     }
-    fn schlick_r0(&self, eta_i: f32, eta_t: f32) -> f32 {
-        reference::fresnel_schlick::schlick_r0(eta_i, eta_t)
-    }
     fn fresnel_schlick(&self, cos_theta_i: f32, eta_i: f32, eta_t: f32) -> f32 {
         match self.0 {
             Flaw::SchlickR0Everywhere => {
@@ -96,9 +104,6 @@ impl Tasks for Flawed {
             }
             _ => reference::fresnel_schlick::fresnel_schlick(self, cos_theta_i, eta_i, eta_t),
         }
-    }
-    fn cosine_sample(&self, u: Vec2) -> Vec3 {
-        reference::cosine_sample::cosine_sample(u)
     }
     fn cosine_pdf(&self, w: Vec3) -> f32 {
         match self.0 {
@@ -157,9 +162,6 @@ impl Tasks for Flawed {
             _ => reference::beckmann_ndf::beckmann_ndf(h, alpha),
         }
     }
-    fn ndf_sample(&self, wo: Vec3, alpha_x: f32, alpha_y: f32, u: Vec2) -> Option<Vec3> {
-        reference::ndf_sample::ndf_sample(self, wo, alpha_x, alpha_y, u)
-    }
     fn ndf_pdf(&self, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> f32 {
         match self.0 {
             Flaw::NdfPdfUnguarded => naive::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
@@ -167,12 +169,46 @@ impl Tasks for Flawed {
             _ => reference::ndf_sample::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
         }
     }
-    fn brdf_check(
+    fn path_trace(
         &self,
-        brdf: &dyn Fn(Vec3, Vec3) -> f32,
+        scene: &Scene,
+        segment: &Segment,
+        depth: i32,
         sampler: &mut Sampler,
-        samples: usize,
-    ) -> PlausibilityReport {
-        reference::brdf_check::brdf_check(self, brdf, sampler, samples)
+    ) -> Vec3 {
+        match self.0 {
+            Flaw::PathTraceNoDepthGuard => {
+                naive::path_trace_no_depth_guard(self, scene, segment, depth, sampler)
+            }
+            _ => reference::path_trace::path_trace(self, scene, segment, depth, sampler),
+        }
+    }
+    fn mis(
+        &self,
+        scene: &Scene,
+        hit: &Hit,
+        wo: Vec3,
+        heuristic: Heuristic,
+        sampler: &mut Sampler,
+    ) -> DirectLight {
+        match self.0 {
+            Flaw::MisUnguarded => naive::mis_unguarded(self, scene, hit, wo, heuristic, sampler),
+            _ => reference::mis::mis(self, scene, hit, wo, heuristic, sampler),
+        }
+    }
+    fn delta_tracking(
+        &self,
+        medium: &dyn Medium,
+        ray: &Ray,
+        t_max: f32,
+        max_steps: u32,
+        sampler: &mut Sampler,
+    ) -> FreeFlight {
+        match self.0 {
+            Flaw::DeltaTrackingSheet => {
+                naive::delta_tracking_sheet(medium, ray, t_max, max_steps, sampler)
+            }
+            _ => reference::delta_tracking::delta_tracking(medium, ray, t_max, max_steps, sampler),
+        }
     }
 }

@@ -181,3 +181,136 @@ pub fn ndf_pdf_no_jacobian(t: &impl Tasks, wo: Vec3, wi: Vec3, alpha_x: f32, alp
     }
     t.aniso_ndf(h, alpha_x, alpha_y) * h.z
 }
+
+/// A path tracer that stops only at depth 1 (no test for depth ≤ 0), so a path started at
+/// depth 0 runs on until Russian roulette ends it.
+pub fn path_trace_no_depth_guard(
+    t: &impl Tasks,
+    scene: &pbrlab::scene::Scene,
+    segment: &pbrlab::integrator::Segment,
+    depth: i32,
+    sampler: &mut pbrlab::sampling::Sampler,
+) -> Vec3 {
+    let Some(hit) = &segment.hit else {
+        return if segment.emission_counted {
+            Vec3::ZERO
+        } else {
+            scene.environment(segment.ray.dir)
+        };
+    };
+    let wo = -segment.ray.dir;
+    let mut radiance = if segment.emission_counted {
+        Vec3::ZERO
+    } else {
+        scene.emitted(hit, wo)
+    };
+    if depth == 1 {
+        return radiance;
+    }
+    let direct = t.mis(scene, hit, wo, scene.heuristic(), sampler);
+    radiance += direct.radiance;
+    let Some(bounce) = direct.bounce else {
+        return radiance;
+    };
+    let mut weight = bounce.weight;
+    if scene.settings().roulette_applies(depth) {
+        let q = weight.max_element().min(0.95);
+        if sampler.next_1d() >= q {
+            return radiance;
+        }
+        weight /= q;
+    }
+    radiance + weight * t.path_trace(scene, &bounce.segment, depth - 1, sampler)
+}
+
+/// Direct light with the textbook formulas and no guards: the light sample's area pdf is
+/// converted with whatever cos θl is (0 edge-on), and the BSDF sample is weighted by the
+/// heuristic even when it comes from a delta lobe (pdf 0). Area lights only.
+pub fn mis_unguarded(
+    t: &impl Tasks,
+    scene: &pbrlab::scene::Scene,
+    hit: &pbrlab::geometry::Hit,
+    wo: Vec3,
+    _heuristic: pbrlab::integrator::Heuristic,
+    sampler: &mut pbrlab::sampling::Sampler,
+) -> pbrlab::integrator::DirectLight {
+    use pbrlab::integrator::{Bounce, DirectLight, Segment};
+    use pbrlab::light::LightSample;
+    let power = |a: f32, b: f32| a * a / (a * a + b * b);
+    let bsdf = scene.bsdf(hit);
+    let mut radiance = Vec3::ZERO;
+    if let Some(LightSample::Area {
+        p,
+        n,
+        radiance: le,
+        pdf_area,
+    }) = scene.sample_light(hit.p, sampler)
+    {
+        let d = p - hit.p;
+        let dist2 = d.length_squared();
+        let wi = d / dist2.sqrt();
+        let cos_l = -n.dot(wi);
+        let pdf_light = pdf_area * dist2 / cos_l;
+        let (ray, t_max) = hit.spawn_to(p);
+        if !scene.occluded(&ray, t_max) {
+            let w = power(pdf_light, bsdf.pdf(t, wo, wi));
+            radiance += bsdf.eval(t, wo, wi) * le * w / pdf_light;
+        }
+    }
+    let Some(s) = bsdf.sample(t, wo, sampler) else {
+        return DirectLight {
+            radiance,
+            bounce: None,
+        };
+    };
+    let ray = hit.spawn(s.wi);
+    let next = scene.intersect(&ray);
+    if let Some(h) = &next {
+        let le = scene.emitted(h, -s.wi);
+        let pdf_light = scene.light_pdf(h) * h.t * h.t / h.n.dot(s.wi).abs();
+        radiance += s.weight * le * power(s.pdf, pdf_light);
+    }
+    DirectLight {
+        radiance,
+        bounce: Some(Bounce {
+            weight: s.weight,
+            segment: Segment {
+                ray,
+                hit: next,
+                emission_counted: true,
+            },
+        }),
+    }
+}
+
+/// The worksheet's delta tracking: two random numbers drawn once and reused at every step,
+/// an escape reported as an absorption at `t_max`, and (to keep the test finite) the
+/// step bound honoured.
+pub fn delta_tracking_sheet(
+    medium: &dyn pbrlab::medium::Medium,
+    ray: &pbrlab::geometry::Ray,
+    t_max: f32,
+    max_steps: u32,
+    sampler: &mut pbrlab::sampling::Sampler,
+) -> pbrlab::medium::FreeFlight {
+    use pbrlab::medium::FreeFlight;
+    let (u0, u1) = (sampler.next_1d(), sampler.next_1d());
+    let majorant = medium.majorant();
+    let dt = -(1.0 - u0).ln() / majorant;
+    let mut t = 0.0;
+    for _ in 0..max_steps {
+        t += dt;
+        if t > t_max {
+            return FreeFlight::Absorb { t: t_max };
+        }
+        let c = medium.coefficients(ray.at(t));
+        if u1 * majorant < c.sigma_t() {
+            return if u1 * majorant < c.sigma_s {
+                FreeFlight::Scatter { t }
+            } else {
+                FreeFlight::Absorb { t }
+            };
+        }
+    }
+    FreeFlight::Exhausted
+}

@@ -7,31 +7,30 @@ mod beckmann_ndf;
 mod brdf_check;
 mod cook_torrance;
 mod cosine_sample;
+mod delta_tracking;
 mod fresnel_schlick;
 mod kajiya_kay;
+mod mis;
 mod ndf_sample;
+mod path_trace;
 mod phong;
 mod reflect;
 mod refract_stack;
 mod smith_g1;
 
 pub use aniso_ndf::{DELTA_PEAK, DELTA_PEAK_MIN};
+pub use delta_tracking::STREAM_STARTING_AT_ZERO;
 pub use refract_stack::stack_report_value;
 
 use super::case::Case;
 use crate::worksheet::{TaskId, Tasks};
 
 /// Every case of every task, in worksheet order.
-///
-/// The integrator tasks (`path_trace`, `mis`, `delta_tracking`) have no cases yet: their
-/// functions are not in [`Tasks`] until the renderer lands. Their cases (zero pdf, a delta
-/// BSDF under MIS, σt = 1e6, a majorant 1e6 × σt, σ̄ = 0, a random number of exactly 0,
-/// path depth 0) go in one file per task here, like the others.
 pub fn cases<T: Tasks>() -> Vec<Case<T>> {
     TaskId::ALL.into_iter().flat_map(cases_for::<T>).collect()
 }
 
-/// The cases of one task (empty for a task without any yet).
+/// The cases of one task.
 pub fn cases_for<T: Tasks>(task: TaskId) -> Vec<Case<T>> {
     match task {
         TaskId::Reflect => reflect::cases(),
@@ -46,7 +45,9 @@ pub fn cases_for<T: Tasks>(task: TaskId) -> Vec<Case<T>> {
         TaskId::BeckmannNdf => beckmann_ndf::cases(),
         TaskId::NdfSample => ndf_sample::cases(),
         TaskId::BrdfCheck => brdf_check::cases(),
-        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => Vec::new(),
+        TaskId::PathTrace => path_trace::cases(),
+        TaskId::Mis => mis::cases(),
+        TaskId::DeltaTracking => delta_tracking::cases(),
     }
 }
 
