@@ -3,6 +3,8 @@
 //! volumetric path tracer conserves energy (a white scattering ball under a white sky is
 //! invisible) and attenuates by Beer-Lambert.
 
+#![cfg(feature = "solutions")]
+
 use glam::Vec3;
 use pbrlab::geometry::Ray;
 use pbrlab::implementation::Reference;

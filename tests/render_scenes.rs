@@ -1,6 +1,8 @@
 //! Every scene in scenes/ loads and renders a few samples with the reference; the image
 //! files are written and read back; the built-in probe scene is valid.
 
+#![cfg(feature = "solutions")]
+
 use pbrlab::grade::probe::probe_scene;
 use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, output, render};
@@ -107,4 +109,17 @@ fn the_probe_scene_is_valid() {
     // The probe scene calls no closed-form task (uniform hemisphere sampling).
     let tasks: Vec<_> = scene.needs().tasks.iter().collect();
     assert_eq!(tasks, vec![pbrlab::worksheet::TaskId::PathTrace]);
+}
+
+#[test]
+fn the_probes_of_the_integrator_tasks_run_the_reference() {
+    use pbrlab::grade::probe::probe_task;
+    use pbrlab::implementation::catch_quietly;
+    use pbrlab::worksheet::TaskId;
+    for task in [TaskId::PathTrace, TaskId::Mis, TaskId::DeltaTracking] {
+        assert!(
+            catch_quietly(|| probe_task(&Reference, task)).is_ok(),
+            "{task}"
+        );
+    }
 }
