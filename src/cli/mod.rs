@@ -1,5 +1,7 @@
 //! The `pbrlab` command line: one file per subcommand.
 
+mod grade;
+mod grade_worker;
 mod hint;
 mod tasks;
 
@@ -21,6 +23,11 @@ pub enum Command {
     Tasks(tasks::Args),
     /// Show the hints of a task, one level at a time.
     Hint(hint::Args),
+    /// Grade your tasks (or the reference) and print a report.
+    Grade(grade::Args),
+    /// Grade one task in an isolated process (used by `grade`; reads its job on stdin).
+    #[command(hide = true)]
+    GradeWorker(grade_worker::Args),
 }
 
 /// Runs the command line.
@@ -28,6 +35,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
+        Some(Command::Grade(args)) => grade::run(args),
+        Some(Command::GradeWorker(args)) => grade_worker::run(args),
         None => tasks::run(tasks::Args::default()),
     }
 }
