@@ -10,12 +10,14 @@
 //! - [`implementation`]: `Student` (exercises/), `Reference` (solutions/) and `Mixed`.
 //! - [`math`], [`sampling`], [`optics`], [`bsdf`]: framework pieces that are not tasks.
 //! - [`grade`]: the grader.
+//! - [`handout`]: the student repository without the solutions.
 //!
 //! [`Tasks`]: worksheet::Tasks
 
 pub mod bsdf;
 pub mod cli;
 pub mod grade;
+pub mod handout;
 pub mod implementation;
 pub mod math;
 pub mod optics;

@@ -2,8 +2,10 @@
 
 mod grade;
 mod grade_worker;
+mod handout;
 mod hint;
 mod tasks;
+mod watch;
 
 use clap::{Parser, Subcommand};
 
@@ -28,6 +30,10 @@ pub enum Command {
     /// Grade one task in an isolated process (used by `grade`; reads its job on stdin).
     #[command(hide = true)]
     GradeWorker(grade_worker::Args),
+    /// Regrade every time you save a file in exercises/.
+    Watch(watch::Args),
+    /// Write the student repository (no solutions) into a directory.
+    Handout(handout::Args),
 }
 
 /// Runs the command line.
@@ -37,6 +43,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Grade(args)) => grade::run(args),
         Some(Command::GradeWorker(args)) => grade_worker::run(args),
+        Some(Command::Watch(args)) => watch::run(args),
+        Some(Command::Handout(args)) => handout::run(args),
         None => tasks::run(tasks::Args::default()),
     }
 }

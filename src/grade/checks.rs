@@ -129,7 +129,6 @@ fn sampling_check<T: Tasks>(
     });
     match outcome {
         Ok(Ok(histogram)) => {
-            result.passed = true;
             result.summary = format!(
                 "{} samples match the reference density (χ² = {:.1}, {} dof, p = {:.3})",
                 SAMPLING_SAMPLES, histogram.chi2, histogram.dof, histogram.p_value
@@ -151,12 +150,11 @@ fn sampling_check<T: Tasks>(
             result.detail = Some(Detail::Sampling(*histogram));
         }
         Err(p) => {
-            result.not_attempted = p.todo_in.is_some();
             result.summary = "the sampler panicked".into();
-            result.fail(format!("{call}: {}", p.describe()));
-            result.panic = Some(p);
+            result.fail_panic(&call.to_string(), &p);
         }
     }
+    result.finish();
     result.seconds = start.elapsed().as_secs_f64();
     result
 }
@@ -185,7 +183,6 @@ fn estimator_check(
     });
     match outcome {
         Ok(Ok(stats)) => {
-            result.passed = true;
             result.summary = stats.describe();
             result.p_values.push(stats.p_value);
             result.detail = Some(Detail::Estimator(stats));
@@ -199,43 +196,41 @@ fn estimator_check(
             }
         }
         Err(p) => {
-            result.not_attempted = p.todo_in.is_some();
             result.summary = "the estimator panicked".into();
-            result.fail(format!("{}: {}", spec.name, p.describe()));
-            result.panic = Some(p);
+            result.fail_panic(&spec.name, &p);
         }
     }
+    result.finish();
     result.seconds = start.elapsed().as_secs_f64();
     result
 }
 
 /// The status and points of a task from its checks.
+///
+/// A task whose cases all stopped at its own stub is not attempted. One whose failures all
+/// stopped at other tasks' stubs (possible only without the reference, where the student's
+/// own dependencies run) needs those tasks first. Otherwise the points are split by check
+/// weight.
 pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
     let points = task.info().points as f64;
     if checks.is_empty() {
         return (TaskStatus::NoChecks, 0.0);
     }
-    if checks.iter().all(|c| c.not_attempted) {
-        let todo: Vec<&str> = checks
-            .iter()
-            .filter_map(|c| c.panic.as_ref().and_then(|p| p.todo_in.as_deref()))
-            .chain(
-                checks
-                    .iter()
-                    .flat_map(|c| c.failures.iter())
-                    .filter_map(|m| todo_task(m)),
-            )
-            .collect();
-        return if todo.is_empty() || todo.contains(&task.name()) {
-            (TaskStatus::NotAttempted, 0.0)
-        } else {
-            (
-                TaskStatus::NeedsTask {
-                    task: todo[0].to_string(),
-                },
-                0.0,
-            )
-        };
+    let failing = || checks.iter().filter(|c| !c.passed);
+    let stubbed: Vec<&str> = failing()
+        .flat_map(|c| c.todo_in.iter().map(String::as_str))
+        .collect();
+    let only_stubs = failing().all(|c| c.todo_failed == c.failed);
+    if checks.iter().all(|c| c.not_attempted)
+        && (stubbed.is_empty() || stubbed.contains(&task.name()))
+    {
+        return (TaskStatus::NotAttempted, 0.0);
+    }
+    if let Some(other) = stubbed.iter().find(|t| **t != task.name())
+        && only_stubs
+    {
+        let task = other.to_string();
+        return (TaskStatus::NeedsTask { task }, 0.0);
     }
     let total = super::verdict::total(checks.iter().map(|c| c.weight));
     let passed = super::verdict::total(checks.iter().filter(|c| c.passed).map(|c| c.weight));
@@ -244,10 +239,4 @@ pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
     } else {
         (TaskStatus::Failed, points * passed / total)
     }
-}
-
-/// The task named by a "todo!() in exercises/<task>.rs" message.
-fn todo_task(message: &str) -> Option<&str> {
-    let rest = message.split("todo!() in exercises/").nth(1)?;
-    rest.split(".rs").next()
 }

@@ -16,10 +16,13 @@ use std::time::Instant;
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EstimatorRun {
     /// Mean of the estimates.
+    #[serde(with = "super::lenient_f64")]
     pub mean: f64,
     /// Standard error of the mean (from the sample variance).
+    #[serde(with = "super::lenient_f64")]
     pub std_error: f64,
     /// |mean − analytic| / |analytic| (absolute error when the analytic value is 0).
+    #[serde(with = "super::lenient_f64")]
     pub error: f64,
     /// Wall time for all samples, in seconds.
     pub seconds: f64,

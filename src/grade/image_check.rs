@@ -41,8 +41,11 @@ pub struct ImageDetail {
     pub height: usize,
     /// Share of pixel-channels whose |z| ≤ [`Z_CRITICAL`].
     pub pass_fraction: f64,
-    /// Largest |z| and the pixel (x, y) where it occurs.
-    pub worst: (f64, usize, usize),
+    /// Largest |z| (infinite at a NaN or infinite pixel).
+    #[serde(with = "super::lenient_f64")]
+    pub worst_z: f64,
+    /// The pixel (x, y) where it occurs.
+    pub worst_pixel: (usize, usize),
     /// Pixel-channels that are NaN or infinite in the student's render.
     pub non_finite: usize,
     /// Files written for the report (student, reference, difference PNGs), if any.
@@ -95,7 +98,8 @@ pub fn compare(
         width: student.width,
         height: student.height,
         pass_fraction: passed as f64 / z.len().max(1) as f64,
-        worst,
+        worst_z: worst.0,
+        worst_pixel: (worst.1, worst.2),
         non_finite,
         files: Vec::new(),
     };
@@ -116,9 +120,9 @@ impl ImageDetail {
             100.0 * self.pass_fraction,
             Z_CRITICAL,
             100.0 * PASS_FRACTION,
-            self.worst.0,
-            self.worst.1,
-            self.worst.2,
+            self.worst_z,
+            self.worst_pixel.0,
+            self.worst_pixel.1,
             if self.non_finite > 0 {
                 format!("; {} pixel-channels are NaN or infinite", self.non_finite)
             } else {

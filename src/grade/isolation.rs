@@ -1,9 +1,9 @@
 //! The parent side of isolation: starts a worker process for one job, feeds it the job,
 //! enforces the time limit, and turns whatever happened into a result or a crash report.
 
-use super::worker::{Job, RESULT_MARKER, Record};
+use super::worker::{Job, RESULT_MARKER, Record, STARTED_MARKER};
 use std::io::{BufRead, BufReader, Read, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
@@ -19,10 +19,17 @@ pub struct Launcher {
 }
 
 impl Launcher {
-    /// The running executable started as `pbrlab grade-worker`.
+    /// The running executable started as `pbrlab grade-worker`. On Linux this is
+    /// `/proc/self/exe`, the very file the grader runs from, even if a rebuild has replaced
+    /// the binary at its path since.
     pub fn current_exe() -> anyhow::Result<Self> {
+        let own = Path::new("/proc/self/exe");
         Ok(Self {
-            program: std::env::current_exe()?,
+            program: if own.exists() {
+                own.to_path_buf()
+            } else {
+                std::env::current_exe()?
+            },
             args: vec!["grade-worker".into()],
             env: Vec::new(),
         })
@@ -46,11 +53,21 @@ impl Launcher {
     }
 }
 
+/// Why a worker run has no result.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WorkerFailure {
+    /// The student's code brought the worker down (the message says how).
+    Student(String),
+    /// The grader failed, not the student's code (the worker could not start, or its
+    /// result could not be read).
+    Grader(String),
+}
+
 /// What a worker run produced.
 #[derive(Debug)]
 pub struct WorkerRun {
     /// The record with the right nonce, or why there is none.
-    pub outcome: Result<Record, String>,
+    pub outcome: Result<Record, WorkerFailure>,
     /// What the student's code printed on stdout (and the worker's stderr), truncated.
     pub output: String,
     /// Wall time, in seconds.
@@ -73,10 +90,10 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
         Ok(child) => child,
         Err(e) => {
             return WorkerRun {
-                outcome: Err(format!(
+                outcome: Err(WorkerFailure::Grader(format!(
                     "could not start the worker {}: {e}",
                     launcher.program.display()
-                )),
+                ))),
                 output: String::new(),
                 seconds: 0.0,
             };
@@ -90,10 +107,17 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     let nonce = job.nonce.clone();
     let stdout = child.stdout.take().map(|out| {
         std::thread::spawn(move || {
-            let mut record = None;
+            let (mut record, mut started) = (None, false);
             let mut printed = String::new();
             for line in BufReader::new(out).lines() {
                 let Ok(line) = line else { break };
+                if line
+                    .strip_prefix(STARTED_MARKER)
+                    .is_some_and(|rest| rest.trim() == nonce)
+                {
+                    started = true;
+                    continue;
+                }
                 if let Some(rest) = line.strip_prefix(RESULT_MARKER) {
                     let rest = rest.trim_start();
                     if let Some(json) = rest.strip_prefix(nonce.as_str()) {
@@ -106,7 +130,7 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
                     printed.push('\n');
                 }
             }
-            (record, printed)
+            (record, started, printed)
         })
     });
     let stderr = child.stderr.take().map(|err| {
@@ -119,9 +143,10 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
         })
     });
     let status = wait(&mut child, timeout);
-    let (record, printed) = stdout
-        .and_then(|h| h.join().ok())
-        .unwrap_or((None, String::new()));
+    let (record, started, printed) =
+        stdout
+            .and_then(|h| h.join().ok())
+            .unwrap_or((None, false, String::new()));
     let errors = stderr.and_then(|h| h.join().ok()).unwrap_or_default();
     let seconds = start.elapsed().as_secs_f64();
     let mut output = printed;
@@ -131,13 +156,25 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     }
     output.truncate(floor_char_boundary(&output, OUTPUT_LIMIT));
     let outcome = match (status, record) {
-        (None, _) => Err(format!(
+        (Some(_), None) if !started => Err(WorkerFailure::Grader(format!(
+            "the worker did not start: {}",
+            errors
+                .lines()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("no message")
+                .trim()
+        ))),
+        (None, _) => Err(WorkerFailure::Student(format!(
             "timed out after {} s and was stopped (an infinite loop?)",
             timeout.as_secs_f64()
-        )),
+        ))),
         (Some(_), Some(Ok(record))) => Ok(record),
-        (Some(_), Some(Err(e))) => Err(format!("sent an unreadable result: {e}")),
-        (Some(status), None) => Err(explain(status, &errors, job.memory_limit)),
+        (Some(_), Some(Err(e))) => Err(WorkerFailure::Grader(format!("unreadable result: {e}"))),
+        (Some(status), None) => Err(WorkerFailure::Student(explain(
+            status,
+            &errors,
+            job.memory_limit,
+        ))),
     };
     WorkerRun {
         outcome,

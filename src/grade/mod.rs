@@ -29,6 +29,7 @@ pub mod expected;
 pub mod history;
 pub mod image_check;
 pub mod isolation;
+pub mod lenient_f64;
 pub mod output;
 pub mod panics;
 pub mod probe;

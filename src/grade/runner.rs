@@ -117,7 +117,9 @@ fn run_all(
         .into_iter()
         .map(|r| {
             r.unwrap_or(isolation::WorkerRun {
-                outcome: Err("the worker thread did not report".into()),
+                outcome: Err(isolation::WorkerFailure::Grader(
+                    "the worker thread did not report".into(),
+                )),
                 output: String::new(),
                 seconds: 0.0,
             })
@@ -283,14 +285,18 @@ pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
             (status, points, checks)
         }
         Ok(Record::Attempted { .. }) => (
-            TaskStatus::Crashed {
-                reason: "answered a probe instead of grading".into(),
+            TaskStatus::GraderError {
+                message: "the worker answered a probe instead of grading".into(),
             },
             0.0,
             Vec::new(),
         ),
-        Ok(Record::Error { message }) => (TaskStatus::Crashed { reason: message }, 0.0, Vec::new()),
-        Err(reason) => (TaskStatus::Crashed { reason }, 0.0, Vec::new()),
+        Ok(Record::Error { message }) | Err(isolation::WorkerFailure::Grader(message)) => {
+            (TaskStatus::GraderError { message }, 0.0, Vec::new())
+        }
+        Err(isolation::WorkerFailure::Student(reason)) => {
+            (TaskStatus::Crashed { reason }, 0.0, Vec::new())
+        }
     };
     let max_points = if status == TaskStatus::NoChecks {
         0.0

@@ -117,7 +117,8 @@ pub struct Histogram {
     pub expected: Vec<f64>,
     /// Student rejections and the expected number.
     pub rejected: (u64, f64),
-    /// χ² statistic, degrees of freedom and p-value.
+    /// χ² statistic (infinite when samples land where the reference density is 0).
+    #[serde(with = "super::lenient_f64")]
     pub chi2: f64,
     /// Degrees of freedom after pooling.
     pub dof: usize,

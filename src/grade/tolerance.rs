@@ -98,8 +98,10 @@ pub struct Mismatch {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Error {
     /// Absolute error (infinite when a value is NaN or the shapes differ).
+    #[serde(with = "super::lenient_f64")]
     pub abs: f64,
     /// Relative error, `abs / |expected|` (infinite when expected is 0 and abs > 0).
+    #[serde(with = "super::lenient_f64")]
     pub rel: f64,
 }
 

@@ -18,25 +18,21 @@ pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tas
     result.total = cases.len();
     let mut worst: Option<Worst> = None;
     let mut ratios = Vec::new();
-    let mut todo_only = !cases.is_empty();
     for case in cases {
         let outcome = panics::catch(|| case.call.eval(t));
         let (error, failure) = match &outcome {
-            Ok(got) => {
-                todo_only = false;
-                match case.judge(got) {
-                    Ok(error) => (error, None),
-                    Err(problem) => {
-                        if matches!(case.rule, Rule::Close(_)) {
-                            ratios.extend(ratios_of(got, &case.expected));
-                        }
-                        (super::tolerance::error(got, &case.expected), Some(problem))
+            Ok(got) => match case.judge(got) {
+                Ok(error) => (error, None),
+                Err(problem) => {
+                    if matches!(case.rule, Rule::Close(_)) {
+                        ratios.extend(ratios_of(got, &case.expected));
                     }
+                    (super::tolerance::error(got, &case.expected), Some(problem))
                 }
-            }
+            },
             Err(p) => {
-                todo_only &= p.todo_in.is_some();
-                (Error::UNBOUNDED, Some(p.describe()))
+                result.fail_panic(&format!("{} [{}]", case.call, case.name), p);
+                (Error::UNBOUNDED, None)
             }
         };
         if worst.as_ref().is_none_or(|w| error.abs > w.error.abs) {
@@ -54,8 +50,7 @@ pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tas
             result.fail(format!("{}: {problem}{note} [{}]", case.call, case.name));
         }
     }
-    result.passed = result.failed == 0;
-    result.not_attempted = todo_only;
+    result.finish();
     result.worst = worst;
     result.summary = format!(
         "{}/{} cases agree with the reference",

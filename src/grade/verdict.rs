@@ -73,10 +73,12 @@ pub struct CheckResult {
     pub alpha: f64,
     /// p-values of the statistical sub-tests, for calibration studies.
     pub p_values: Vec<f64>,
-    /// True when every case stopped at the task's own `todo!()`.
+    /// True when every case stopped at a `todo!()` stub.
     pub not_attempted: bool,
-    /// A panic that stopped the check, if any.
-    pub panic: Option<Panic>,
+    /// The tasks whose `todo!()` stubs stopped cases of this check.
+    pub todo_in: Vec<String>,
+    /// How many failing cases stopped at a `todo!()` stub.
+    pub todo_failed: usize,
     /// Data for the HTML report.
     pub detail: Option<Detail>,
     /// Wall time spent in the check, in seconds.
@@ -109,7 +111,8 @@ impl CheckResult {
             alpha: 0.0,
             p_values: Vec::new(),
             not_attempted: false,
-            panic: None,
+            todo_in: Vec::new(),
+            todo_failed: 0,
             detail: None,
             seconds: 0.0,
         }
@@ -121,6 +124,24 @@ impl CheckResult {
         if self.failures.len() < MAX_MESSAGES {
             self.failures.push(message);
         }
+    }
+
+    /// Records a case that panicked; `context` names the case.
+    pub fn fail_panic(&mut self, context: &str, panic: &Panic) {
+        if let Some(task) = &panic.todo_in {
+            self.todo_failed += 1;
+            if !self.todo_in.contains(task) {
+                self.todo_in.push(task.clone());
+            }
+        }
+        self.fail(format!("{context}: {}", panic.describe()));
+    }
+
+    /// Sets the verdict from the cases recorded: passed when none failed, not attempted when
+    /// every case stopped at a stub.
+    pub fn finish(&mut self) {
+        self.passed = self.failed == 0;
+        self.not_attempted = self.total > 0 && self.todo_failed == self.total;
     }
 }
 
@@ -168,6 +189,11 @@ pub enum TaskStatus {
     },
     /// The task has no checks yet (its code arrives with the renderer).
     NoChecks,
+    /// The grader itself failed on this task (not the student's code); grade again.
+    GraderError {
+        /// What went wrong.
+        message: String,
+    },
 }
 
 impl TaskStatus {
@@ -180,6 +206,7 @@ impl TaskStatus {
             TaskStatus::NeedsTask { task } => format!("needs {task}"),
             TaskStatus::Crashed { .. } => "CRASHED".into(),
             TaskStatus::NoChecks => "no checks yet".into(),
+            TaskStatus::GraderError { .. } => "GRADER ERROR".into(),
         }
     }
 }

@@ -19,6 +19,10 @@ use std::io::{Read, Write};
 /// The marker that starts the result line.
 pub const RESULT_MARKER: &str = "PBRLAB-RESULT";
 
+/// The marker of the line a worker prints once it has its job, before any student code
+/// runs: a worker that ends without it failed to start (the grader's fault, not the code's).
+pub const STARTED_MARKER: &str = "PBRLAB-STARTED";
+
 /// Which implementation a worker runs for the graded task.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "impl", rename_all = "snake_case")]
@@ -154,6 +158,11 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
             std::process::exit(2);
         }
     };
+    {
+        let mut out = std::io::stdout().lock();
+        let _ = writeln!(out, "\n{STARTED_MARKER} {}", job.nonce);
+        let _ = out.flush();
+    }
     let record = match limit_memory(job.memory_limit).and_then(|()| make(&job.implementation)) {
         Ok(t) => run_job(&t, &job.kind),
         Err(e) => Record::Error {

@@ -41,9 +41,11 @@ pub struct Patch {
     pub ndf_sample: Option<fn(&Patch, Vec3, f32, f32, Vec2) -> Option<Vec3>>,
     pub ndf_pdf: Option<fn(&Patch, Vec3, Vec3, f32, f32) -> f32>,
     pub brdf_check: Option<fn(&Patch, Brdf<'_>, &mut Sampler, usize) -> PlausibilityReport>,
-    /// Panic, loop, abort, … instead of answering (for isolation tests): applied to every
-    /// function of the active tasks.
+    /// Panic, loop, abort, … (for isolation tests) in every function of `task` while that
+    /// task is active.
     pub misbehave: Option<fn()>,
+    /// The task the patch was made for.
+    pub task: TaskId,
 }
 
 impl Patch {
@@ -71,6 +73,7 @@ impl Patch {
             ndf_pdf: None,
             brdf_check: None,
             misbehave: None,
+            task,
         }
     }
 
@@ -82,7 +85,10 @@ impl Patch {
 
     fn on(&self, task: TaskId) -> bool {
         let on = self.active.contains(task);
-        if on && let Some(misbehave) = self.misbehave {
+        if on
+            && task == self.task
+            && let Some(misbehave) = self.misbehave
+        {
             misbehave();
         }
         on

@@ -6,6 +6,9 @@ use std::fmt::Write;
 
 /// The worst error of a task, short: `abs 2.1e-3 (rel 0.8 %)`.
 fn worst(outcome: &TaskOutcome) -> String {
+    if !matches!(outcome.status, TaskStatus::Passed | TaskStatus::Failed) {
+        return "-".into();
+    }
     match outcome.worst() {
         Some(w) if w.error.abs.is_infinite() => "not comparable".into(),
         Some(w) if w.error.abs == 0.0 => "0".into(),
@@ -65,6 +68,12 @@ pub fn details(t: &TaskOutcome) -> String {
     match &t.status {
         TaskStatus::Crashed { reason } => {
             let _ = writeln!(s, "  the code {reason}");
+        }
+        TaskStatus::GraderError { message } => {
+            let _ = writeln!(
+                s,
+                "  the grader failed here, not your code ({message}); grade again"
+            );
         }
         TaskStatus::NeedsTask { task } => {
             let _ = writeln!(s, "  grading stops at `{task}`, which is not written yet");
