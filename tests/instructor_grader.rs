@@ -149,3 +149,41 @@ fn failure_messages_name_the_case_input_and_cause() {
         messages(&checks)
     );
 }
+
+#[test]
+fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() {
+    use pbrlab::grade::catalogue::{evaluate, hidden_inputs, public_inputs};
+    let task = TaskId::FresnelSchlick;
+    let public = public_inputs(task);
+    let hidden = hidden_inputs(task, 1234);
+    assert_eq!(
+        hidden,
+        hidden_inputs(task, 1234),
+        "a seed gives the same cases"
+    );
+    assert_ne!(hidden, hidden_inputs(task, 1235));
+    assert!(
+        hidden
+            .iter()
+            .all(|h| public.iter().all(|p| p.call != h.call))
+    );
+    let mut input = inputs(1).remove(&task).unwrap();
+    input.hidden = evaluate(&hidden, &Reference).unwrap();
+    let (status, _, checks) = grade(&Reference, task, &input);
+    assert_eq!(status, TaskStatus::Passed);
+    assert!(
+        checks
+            .iter()
+            .any(|c| c.visibility == pbrlab::grade::verdict::Visibility::Hidden)
+    );
+    let w = wrong::catalogue()
+        .into_iter()
+        .find(|w| w.task == task)
+        .unwrap();
+    let (_, _, checks) = grade(&w.patch, task, &input);
+    let hidden_check = checks
+        .iter()
+        .find(|c| c.visibility == pbrlab::grade::verdict::Visibility::Hidden)
+        .unwrap();
+    assert!(!hidden_check.passed);
+}

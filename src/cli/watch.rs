@@ -81,3 +81,32 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_save_changes_the_snapshot() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("reflect.rs");
+        std::fs::write(&file, "todo!()").unwrap();
+        let before = snapshot(dir.path());
+        assert_eq!(before.len(), 1);
+        let later = SystemTime::now() + Duration::from_secs(5);
+        std::fs::File::options()
+            .write(true)
+            .open(&file)
+            .unwrap()
+            .set_modified(later)
+            .unwrap();
+        assert_ne!(snapshot(dir.path()), before);
+        std::fs::create_dir(dir.path().join("sub")).unwrap();
+        std::fs::write(dir.path().join("sub/new.rs"), "").unwrap();
+        assert_eq!(
+            snapshot(dir.path()).len(),
+            2,
+            "files in subfolders count too"
+        );
+    }
+}

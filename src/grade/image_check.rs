@@ -3,7 +3,9 @@
 //! Mitsuba's test suite). A render passes when at least [`PASS_FRACTION`] of its
 //! pixel-channels pass; a false-colour image shows where and in which direction it differs.
 
+use super::verdict::{CheckKind, CheckResult, Detail};
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// A Monte Carlo render: the per-pixel mean and the variance of that mean, linear RGB,
 /// row-major, 3 floats per pixel.
@@ -132,6 +134,38 @@ impl ImageDetail {
     }
 }
 
+/// The image check of one render: compares `student` with `reference` and, given a report
+/// directory, writes student | reference | difference PNGs there for the HTML page.
+pub fn run(
+    name: &str,
+    student: &ImageStats,
+    reference: &ImageStats,
+    report_dir: Option<&Path>,
+) -> CheckResult {
+    let start = std::time::Instant::now();
+    let mut result = CheckResult::new(format!("image: {name}"), CheckKind::Image);
+    result.total = 1;
+    match compare(name, student, reference) {
+        Err(message) => result.fail(message),
+        Ok((mut detail, z)) => {
+            if let Some(dir) = report_dir {
+                match super::report::images::write_triple(dir, name, student, reference, &z) {
+                    Ok(files) => detail.files = files,
+                    Err(e) => result.summary = format!("(images not written: {e:#}) "),
+                }
+            }
+            result.summary += &detail.describe();
+            if !detail.passed() {
+                result.fail(detail.describe());
+            }
+            result.detail = Some(Detail::Image(detail));
+        }
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
 /// A false-colour picture of per-pixel-channel z-scores (3 per pixel): for each pixel the
 /// channel with the largest |z|, blue where the student is too dark, red where too bright,
 /// white where they agree, saturating at |z| = 2 `Z_CRITICAL`; non-finite pixels are green.
@@ -192,6 +226,30 @@ mod tests {
         let picture = false_colour(&z);
         assert_eq!(picture.len(), 64 * 48 * 3);
         assert_eq!(picture[2], 255, "too dark shows blue");
+    }
+
+    #[test]
+    fn the_check_writes_its_images_and_fails_a_biased_render() {
+        let dir = tempfile::tempdir().unwrap();
+        let reference = render(16, 8, 0.5, 0.01, 1);
+        let ok = run(
+            "same",
+            &render(16, 8, 0.5, 0.01, 2),
+            &reference,
+            Some(dir.path()),
+        );
+        assert!(ok.passed, "{}", ok.summary);
+        let Some(Detail::Image(detail)) = &ok.detail else {
+            panic!("no detail")
+        };
+        assert_eq!(detail.files.len(), 3);
+        let bright = run("bright", &render(16, 8, 0.6, 0.01, 3), &reference, None);
+        assert!(!bright.passed);
+        assert!(
+            bright.failures[0].contains("of pixel-channels"),
+            "{:?}",
+            bright.failures
+        );
     }
 
     #[test]

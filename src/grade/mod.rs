@@ -36,6 +36,7 @@ pub mod probe;
 pub mod report;
 pub mod runner;
 pub mod sampling;
+pub mod scene_gate;
 pub mod stability;
 pub mod stats;
 pub mod test_brdf;

@@ -3,6 +3,7 @@
 
 mod gradescope;
 mod html;
+pub mod images;
 mod svg;
 mod text;
 
