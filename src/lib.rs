@@ -9,6 +9,11 @@
 //!   trait that lists every task function once. Conventions are stated there.
 //! - [`implementation`]: `Student` (exercises/), `Reference` (solutions/) and `Mixed`.
 //! - [`math`], [`sampling`], [`optics`], [`bsdf`]: framework pieces that are not tasks.
+//! - The renderer: [`scene`] (YAML scenes, validation, what a scene needs, and the
+//!   framework API integrators call), [`geometry`] (shapes, BVHs), [`light`], [`medium`],
+//!   [`integrator`] (the path tracer built on the `path_trace` and `mis` tasks, and the
+//!   volumetric path tracer built on `delta_tracking`) and [`render`] (tiles, threads,
+//!   film, image files).
 //! - [`grade`]: the grader.
 //! - [`handout`]: the student repository without the solutions.
 //!
@@ -16,12 +21,21 @@
 
 pub mod bsdf;
 pub mod cli;
+pub mod converge;
+pub mod geometry;
 pub mod grade;
 pub mod handout;
 pub mod implementation;
+pub mod integrator;
+pub mod light;
 pub mod math;
+pub mod medium;
 pub mod optics;
+pub mod panic_hook;
+pub mod render;
 pub mod sampling;
+pub mod scene;
+pub mod stability;
 pub mod task_set;
 pub mod worksheet;
 
@@ -37,9 +51,14 @@ pub mod solutions;
 
 /// What a task file needs in scope: vectors, the task trait, the parameter types.
 pub mod prelude {
-    pub use crate::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
+    pub use crate::bsdf::{Bsdf, BsdfSample, KajiyaKayParams, PhongParams, PlausibilityReport};
+    pub use crate::geometry::{Hit, Ray};
+    pub use crate::integrator::{Bounce, DirectLight, Heuristic, Segment};
+    pub use crate::light::LightSample;
+    pub use crate::medium::{Coefficients, FreeFlight, Medium};
     pub use crate::optics::{LayerStack, Slab, StackReport};
     pub use crate::sampling::Sampler;
+    pub use crate::scene::Scene;
     pub use crate::worksheet::Tasks;
     pub use glam::{Vec2, Vec3};
 }

@@ -21,8 +21,12 @@
 //! the reference standing in for the others, and `--impl mixed` can combine the two.
 
 use crate::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
+use crate::geometry::{Hit, Ray};
+use crate::integrator::{DirectLight, Heuristic, Segment};
+use crate::medium::{FreeFlight, Medium};
 use crate::optics::{LayerStack, StackReport};
 use crate::sampling::Sampler;
+use crate::scene::Scene;
 use glam::{Vec2, Vec3};
 
 /// Identifies one worksheet task. The discriminant is the task's index in [`TASKS`].
@@ -365,11 +369,21 @@ pub static TASKS: [TaskInfo; 15] = [
         points: 15,
         needs: &[TaskId::Mis],
         hints: &[
-            "Radiance along a ray: emission where it lands (only when no light sampling could \
-             have found it), plus direct light there, plus the throughput-weighted radiance \
-             of one sampled continuation.",
-            "Russian roulette: continue with probability q and divide what you return by q, \
-             or the estimator loses energy.",
+            "Return 0 when depth <= 0. Otherwise start from the light at the end of the \
+             segment: scene.emitted(hit, -ray.dir), or scene.environment(ray.dir) if the ray \
+             escaped, but only when segment.emission_counted is false (camera rays). A \
+             segment that mis sampled has its light counted already, with its MIS weight.",
+            "With depth == 1 nothing more may be added. Otherwise call t.mis(scene, hit, wo, \
+             scene.heuristic(), sampler): its radiance is the direct light, and its bounce \
+             (if any) is the traced continuation. Add bounce.weight times the radiance that \
+             t.path_trace returns for bounce.segment with depth − 1.",
+            "Russian roulette: when scene.settings().roulette_applies(depth), keep the path \
+             with a probability q (for example min(largest component of bounce.weight, \
+             0.95)) and divide what it brings back by q. Without the division the image \
+             gets darker; without roulette unbounded paths never end.",
+            "The worksheet's version returns 0 for every path: it never adds emission or \
+             direct light at any level. And with depth starting at 0 its `depth == 0` test \
+             never fires; test `depth <= 0`.",
         ],
     },
     TaskInfo {
@@ -379,10 +393,22 @@ pub static TASKS: [TaskInfo; 15] = [
         points: 15,
         needs: &[],
         hints: &[
-            "Take one light sample and one BSDF sample, and weight each by the balance or \
-             power heuristic. Both pdfs must be per unit solid angle.",
-            "A light sample on an area light converts from area to solid angle by \
-             distance² / |cos θ at the light|.",
+            "Two samples, each weighted: a light sample (scene.sample_light) and a BSDF \
+             sample (scene.bsdf(hit).sample). Both pdfs in a weight must be per unit solid \
+             angle. For an area light, pdf_ω = pdf_area · d² / cos θl with cos θl = \
+             n·(x − p)/d at the light; the worksheet leaves cos θl out (33 % too bright in \
+             its test scene) and mixes area and solid-angle densities in its weights.",
+            "Shadow rays: (ray, t_max) = hit.spawn_to(p), then the light counts when \
+             !scene.occluded(&ray, t_max). The worksheet's distance comparison is inverted: \
+             blockers nearer than the light never cast a shadow.",
+            "The BSDF sample: trace hit.spawn(wi) with scene.intersect. If it hits an emitter \
+             (scene.emitted towards −wi, pdf from scene.light_pdf converted with the hit's \
+             distance and cosine) or escapes (scene.environment, scene.environment_pdf), add \
+             its light times sample.weight times its MIS weight. Return it as the bounce.",
+            "Weights: Balance p_a/(p_a + p_b); Power p_a²/(p_a² + p_b²); Bsdf and Light give 1 \
+             to the named strategy and 0 to the other (then skip that sample's shadow ray). \
+             A delta BSDF sample or a point light has weight 1 always; a pdf sum of 0 means \
+             a contribution of 0, not NaN.",
         ],
     },
     TaskInfo {
@@ -392,9 +418,16 @@ pub static TASKS: [TaskInfo; 15] = [
         points: 12,
         needs: &[],
         hints: &[
-            "Step by exponential distances drawn with the majorant, with fresh random numbers \
-             at every step; accept a tentative collision with probability σt(x)/σ̄.",
-            "Report an escape as an escape, not as an absorption.",
+            "Walk tentative collisions: t += −ln(1 − u) / σ̄ with σ̄ = medium.majorant() and \
+             a fresh u at every step. Once t ≥ t_max the path has escaped.",
+            "At a tentative collision draw a fresh ξ and compare ξ σ̄ with the coefficients at \
+             ray.at(t): below σa it is an absorption, below σa + σs a scattering, otherwise a \
+             null collision and the walk goes on.",
+            "The worksheet reuses u[0] and u[1] at every step: in a homogeneous medium with \
+             σ̄ = 2σt it lets 57 % of paths through where e^−1 = 37 % is right. It also \
+             reports escapes as absorptions, and loops forever when σ̄ = 0 and u = 0.",
+            "Guard σ̄ ≤ 0 (or NaN): nothing can collide, so the path escapes. Stop with \
+             FreeFlight::Exhausted after max_steps tentative collisions.",
         ],
     },
 ];
@@ -420,7 +453,28 @@ macro_rules! tasks {
         ///
         /// Conventions are those of [`crate::worksheet`]: directions point away from the
         /// surface; in the local frame the normal is +z.
-        pub trait Tasks: Sync {
+        ///
+        /// With the `solutions` feature every method defaults to the reference, so a test
+        /// implementation (a known-wrong variant, a correct-but-different one) overrides only
+        /// the functions it changes; calls it does not override reach the reference with the
+        /// test implementation as `t`, so its change propagates as a student's would.
+        #[cfg(feature = "solutions")]
+        pub trait Tasks: Sync + Sized {
+            $($(
+                $(#[$doc])*
+                fn $name(&self, $($arg: $ty),*) -> $ret {
+                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                }
+            )+)+
+        }
+
+        /// Every task function of the worksheet: the interface the renderer and the grader
+        /// are generic over (the handout build, without reference defaults).
+        ///
+        /// Conventions are those of [`crate::worksheet`]: directions point away from the
+        /// surface; in the local frame the normal is +z.
+        #[cfg(not(feature = "solutions"))]
+        pub trait Tasks: Sync + Sized {
             $($(
                 $(#[$doc])*
                 fn $name(&self, $($arg: $ty),*) -> $ret;
@@ -436,13 +490,7 @@ macro_rules! tasks {
         }
 
         #[cfg(feature = "solutions")]
-        impl Tasks for crate::implementation::Reference {
-            $($(
-                fn $name(&self, $($arg: $ty),*) -> $ret {
-                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
-                }
-            )+)+
-        }
+        impl Tasks for crate::implementation::Reference {}
 
         #[cfg(feature = "solutions")]
         impl Tasks for crate::implementation::Mixed {
@@ -556,5 +604,27 @@ tasks! {
         /// Measures positivity, reciprocity and energy conservation of `brdf(wi, wo)`
         /// (local directions) with `samples` random directions; see [`PlausibilityReport`].
         fn brdf_check(@t, brdf: &dyn Fn(Vec3, Vec3) -> f32, sampler: &mut Sampler, samples: usize) -> PlausibilityReport;
+    }
+    path_trace: PathTrace {
+        /// One recursive step of a path tracer: the radiance that arrives along `segment`
+        /// (towards its ray's origin). `depth` is the number of segments the path may still
+        /// have, counting this one; at `depth <= 0` the answer is 0. Adds the emission
+        /// found at the end of the segment unless `segment.emission_counted`, the direct
+        /// light there (from `t.mis`), and the light carried back by the continuation
+        /// `mis` sampled, with Russian roulette once `scene.settings().roulette_applies(depth)`.
+        fn path_trace(@t, scene: &Scene, segment: &Segment, depth: i32, sampler: &mut Sampler) -> Vec3;
+    }
+    mis: Mis {
+        /// Direct light at `hit` towards `wo` by one light sample and one BSDF sample,
+        /// weighted by `heuristic`; also returns the BSDF sample, traced, so the path can
+        /// continue with it. Every pdf in a weight is per unit solid angle.
+        fn mis(@t, scene: &Scene, hit: &Hit, wo: Vec3, heuristic: Heuristic, sampler: &mut Sampler) -> DirectLight;
+    }
+    delta_tracking: DeltaTracking {
+        /// Samples where a path travelling along `ray` through `medium` first really
+        /// collides, on the segment `(0, t_max)`, by delta tracking with the medium's
+        /// majorant; gives up with `FreeFlight::Exhausted` after `max_steps` tentative
+        /// collisions.
+        fn delta_tracking(medium: &dyn Medium, ray: &Ray, t_max: f32, max_steps: u32, sampler: &mut Sampler) -> FreeFlight;
     }
 }

@@ -13,7 +13,7 @@ use pbrlab::task_set::TaskSet;
 use pbrlab::worksheet::TaskId;
 
 #[test]
-fn every_closed_form_task_has_checks() {
+fn every_task_in_the_trait_has_checks() {
     let inputs = inputs(1);
     let graded = graded_tasks(&inputs);
     for task in TaskId::ALL {

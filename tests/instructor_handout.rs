@@ -17,10 +17,13 @@ fn code_lines(text: &str) -> Vec<&str> {
         .collect()
 }
 
-/// Every run of three consecutive code lines of the reference that are not in the exercises
-/// (which share the signatures by design): copying any part of a reference body into the
-/// handout brings one along, while a single line in common (a spherical direction, a clamp)
-/// does not.
+/// Consecutive code lines that make a match.
+const WINDOW: usize = 4;
+
+/// Every run of [`WINDOW`] consecutive code lines of the reference that are not in the
+/// exercises (which share the signatures by design): copying any part of a reference body
+/// into the handout brings one along, while a guard or two in common with framework code
+/// (an early return when a cosine is negative) does not.
 fn solution_windows() -> Vec<String> {
     let mut shared = String::new();
     for entry in std::fs::read_dir(root().join("exercises")).unwrap() {
@@ -33,7 +36,7 @@ fn solution_windows() -> Vec<String> {
             .into_iter()
             .filter(|l| !l.starts_with("use ") && !l.starts_with("pub mod") && !shared.contains(l))
             .collect();
-        windows.extend(lines.windows(3).map(|w| w.join("\n")));
+        windows.extend(lines.windows(WINDOW).map(|w| w.join("\n")));
     }
     windows
 }
@@ -72,8 +75,13 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
             names.contains(&format!("exercises/{task}.rs")),
             "exercises/{task}.rs"
         );
+        let stored = !pbrlab::grade::catalogue::public_inputs(task).is_empty()
+            || !pbrlab::grade::catalogue::sampling_setups(task).is_empty();
         let snap = format!("tests/snapshots/expected/{task}.snap");
-        assert!(names.contains(&snap), "{snap}");
+        assert_eq!(names.contains(&snap), stored, "{snap}");
+        if !stored {
+            continue;
+        }
         let text = std::fs::read_to_string(root().join(&snap)).unwrap();
         assert!(
             !text.contains("\"name\": \"hidden"),

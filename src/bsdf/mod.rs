@@ -1,10 +1,18 @@
-//! BSDF parameter types shared by the task signatures and the materials, and microfacet
-//! helpers that are framework rather than tasks.
+//! Materials and their BSDFs: the reflection models a scene can use, the framework's
+//! sampling and evaluation of them (which calls the worksheet's tasks), and the parameter
+//! types shared by the task signatures.
 
+mod material;
 mod microfacet;
 mod params;
+mod phong_lobe;
 mod plausibility;
+mod sample;
+mod surface;
 
+pub use material::{FresnelModel, HemisphereSampling, Material};
 pub use microfacet::{MIN_ALPHA, projected_alpha};
 pub use params::{KajiyaKayParams, PhongParams};
 pub use plausibility::PlausibilityReport;
+pub use sample::BsdfSample;
+pub use surface::Bsdf;

@@ -1,9 +1,13 @@
 //! The `pbrlab` command line: one file per subcommand.
 
+mod converge;
 mod grade;
 mod grade_worker;
 mod handout;
 mod hint;
+mod needs;
+pub mod render;
+mod stability;
 mod tasks;
 mod watch;
 
@@ -34,6 +38,14 @@ pub enum Command {
     Watch(watch::Args),
     /// Write the student repository (no solutions) into a directory.
     Handout(handout::Args),
+    /// Render a scene to EXR and PNG.
+    Render(render::Args),
+    /// Show the tasks and subsystems a scene needs.
+    Needs(needs::Args),
+    /// Run every task on stiff and extreme inputs (grazing angles, α → 0, the critical angle, …).
+    Stability(stability::Args),
+    /// Error against run time for each sampling strategy: CSV, log-log plot and slopes.
+    Converge(converge::Args),
 }
 
 /// Runs the command line.
@@ -45,6 +57,10 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::GradeWorker(args)) => grade_worker::run(args),
         Some(Command::Watch(args)) => watch::run(args),
         Some(Command::Handout(args)) => handout::run(args),
-        None => tasks::run(tasks::Args::default()),
+        Some(Command::Render(args)) => render::run(args),
+        Some(Command::Needs(args)) => needs::run(args),
+        Some(Command::Stability(args)) => stability::run(args),
+        Some(Command::Converge(args)) => converge::run(args),
+        None => render::run(render::Args::default()),
     }
 }

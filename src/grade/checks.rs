@@ -86,9 +86,12 @@ pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<Check
             (input.seed, 200 + i as u64),
         ));
     }
-    let cases = catalogue::stability_cases(task, t);
+    for (i, (a, b)) in catalogue::unit_pairs(task, t).into_iter().enumerate() {
+        checks.push(units_check(a, b, (input.seed, 300 + i as u64)));
+    }
+    let cases = crate::stability::cases_for::<T>(task);
     if !cases.is_empty() {
-        checks.push(stability::run("stability", &cases));
+        checks.push(stability::run(t, &cases));
     }
     spread_weights(&mut checks);
     checks
@@ -199,6 +202,56 @@ fn estimator_check(
             result.summary = "the estimator panicked".into();
             result.fail_panic(&spec.name, &p);
         }
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// Largest accepted ratio between the variances of one estimator in two units of length.
+/// Sampling noise of the two variances stays within a few percent at the sample counts used;
+/// weights that mix measures change the variance many times over.
+pub const UNIT_VARIANCE_RATIO: f64 = 1.5;
+
+fn units_check(
+    mut a: EstimatorSpec<'_>,
+    mut b: EstimatorSpec<'_>,
+    seed: (u64, u64),
+) -> CheckResult {
+    let start = Instant::now();
+    let mut result = CheckResult::new(
+        format!("estimator: variance independent of units ({})", b.name),
+        CheckKind::Estimator,
+    );
+    result.total = 1;
+    let outcome = panics::catch(|| {
+        estimator::variances(
+            a.samples,
+            seed,
+            a.estimate.as_mut(),
+            b.estimate.as_mut(),
+            a.analytic,
+        )
+    });
+    match outcome {
+        Ok(Ok((va, vb))) => {
+            let ratio = vb / va;
+            result.summary = format!(
+                "variance per sample {} in the original units, {} with lengths scaled (ratio {})",
+                super::output::fmt_num(va),
+                super::output::fmt_num(vb),
+                super::output::fmt_num(ratio)
+            );
+            if !(1.0 / UNIT_VARIANCE_RATIO..=UNIT_VARIANCE_RATIO).contains(&ratio) {
+                result.fail(format!(
+                    "{}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
+                    b.name,
+                    super::output::fmt_num(ratio)
+                ));
+            }
+        }
+        Ok(Err(message)) => result.fail(message),
+        Err(p) => result.fail_panic(&b.name, &p),
     }
     result.finish();
     result.seconds = start.elapsed().as_secs_f64();

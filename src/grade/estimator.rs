@@ -89,8 +89,9 @@ pub struct EstimatorFailure {
     pub stats: Option<EstimatorStats>,
 }
 
-/// A Monte Carlo estimator: one i.i.d. estimate per call, drawing from the sampler.
-pub type Estimator<'a> = dyn FnMut(&mut Sampler) -> f64 + 'a;
+/// A Monte Carlo estimator: one i.i.d. estimate per call, drawing from the sampler, or why
+/// the code under test gave none (an output outside its domain, in words).
+pub type Estimator<'a> = dyn FnMut(&mut Sampler) -> Result<f64, String> + 'a;
 
 /// Runs `estimator` `n` times and tests its mean against `analytic` at significance `alpha`.
 /// `Err` carries a message naming the failure: a non-finite estimate (with its index) or a
@@ -124,18 +125,45 @@ pub fn test_estimator(
         p_value: t_test(&moments, analytic),
     };
     if stats.p_value < alpha {
-        Err(Box::new(EstimatorFailure {
-            message: format!(
-                "{} — the mean is off by {:.1} standard errors (relative error {})",
-                stats.describe(),
-                (student.mean - analytic).abs() / student.std_error.max(f64::MIN_POSITIVE),
+        let off = if student.std_error > 0.0 {
+            format!(
+                "the mean is off by {:.1} standard errors (relative error {})",
+                (student.mean - analytic).abs() / student.std_error,
                 fmt_num(student.error)
-            ),
+            )
+        } else {
+            format!(
+                "every estimate is {}, the analytic value {}",
+                fmt_num(student.mean),
+                fmt_num(analytic)
+            )
+        };
+        Err(Box::new(EstimatorFailure {
+            message: format!("{} — {off}", stats.describe()),
             stats: Some(stats),
         }))
     } else {
         Ok(stats)
     }
+}
+
+/// Variance of an estimator run: `std_error² · n`.
+pub fn variance(run: &EstimatorRun, samples: usize) -> f64 {
+    run.std_error * run.std_error * samples as f64
+}
+
+/// Runs two estimators of the same quantity (the same scene in two units of length) on the
+/// same random numbers and returns their per-sample variances; `Err` names a failed run.
+pub fn variances(
+    n: usize,
+    seed: (u64, u64),
+    a: &mut Estimator<'_>,
+    b: &mut Estimator<'_>,
+    analytic: f64,
+) -> Result<(f64, f64), String> {
+    let (ra, _) = run(analytic, n, seed, a)?;
+    let (rb, _) = run(analytic, n, seed, b)?;
+    Ok((variance(&ra, n), variance(&rb, n)))
 }
 
 fn run(
@@ -148,7 +176,7 @@ fn run(
     let mut moments = Moments::default();
     let start = Instant::now();
     for i in 0..n {
-        let x = estimator(&mut sampler);
+        let x = estimator(&mut sampler).map_err(|e| format!("estimate {i}: {e}"))?;
         if !x.is_finite() {
             return Err(format!("estimate {i} is {}", fmt_num(x)));
         }
@@ -178,8 +206,8 @@ mod tests {
     #[test]
     fn an_unbiased_estimator_passes_and_a_biased_one_fails() {
         // E[2u] = 1 for u uniform on [0, 1).
-        let mut good = |s: &mut Sampler| 2.0 * s.next_f64();
-        let mut reference = |s: &mut Sampler| 2.0 * s.next_f64();
+        let mut good = |s: &mut Sampler| Ok(2.0 * s.next_f64());
+        let mut reference = |s: &mut Sampler| Ok(2.0 * s.next_f64());
         let stats = test_estimator(
             "2u",
             1.0,
@@ -191,7 +219,7 @@ mod tests {
         )
         .unwrap();
         assert_eq!(stats.reference.unwrap().mean, stats.student.mean);
-        let mut biased = |s: &mut Sampler| 2.1 * s.next_f64();
+        let mut biased = |s: &mut Sampler| Ok(2.1 * s.next_f64());
         let failure =
             test_estimator("2.1u", 1.0, 20_000, 1e-3, (1, 0), &mut biased, None).unwrap_err();
         assert!(
@@ -207,7 +235,7 @@ mod tests {
         let mut count = 0;
         let mut nan_at_3 = |_: &mut Sampler| {
             count += 1;
-            if count == 4 { f64::NAN } else { 1.0 }
+            Ok(if count == 4 { f64::NAN } else { 1.0 })
         };
         let failure = test_estimator("x", 1.0, 10, 1e-3, (1, 0), &mut nan_at_3, None).unwrap_err();
         assert!(

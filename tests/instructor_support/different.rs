@@ -148,17 +148,22 @@ pub fn catalogue() -> Vec<Different> {
             |p| {
                 p.cosine_sample = Some(|u| {
                     let d = concentric_disk(u);
-                    Vec3::new(d.x, d.y, (1.0 - d.length_squared()).max(0.0).sqrt())
+                    // u = 0 maps onto the rim: keep cos θ (and the pdf) above 0 there.
+                    Vec3::new(
+                        d.x,
+                        d.y,
+                        (1.0 - d.length_squared()).max(f32::EPSILON).sqrt(),
+                    )
                 })
             },
         ),
         different(
-            "cos θ = sqrt(u.x), φ from u.y (other random-number order)",
+            "cos θ = sqrt(1 − u.x), φ from u.y (other random-number order)",
             CosineSample,
             |p| {
                 p.cosine_sample = Some(|u| {
-                    let c = u.x.sqrt();
-                    let s = (1.0 - u.x).sqrt();
+                    let c = (1.0 - u.x).sqrt();
+                    let s = u.x.sqrt();
                     let phi = TAU * u.y;
                     Vec3::new(s * phi.cos(), s * phi.sin(), c)
                 })
@@ -207,6 +212,8 @@ pub fn catalogue() -> Vec<Different> {
                 if h.z <= 0.0 {
                     return 0.0;
                 }
+                // α = 0 is a mirror, which no density represents: keep a tall finite peak.
+                let (ax, ay) = (ax.max(1e-4), ay.max(1e-4));
                 let c2 = h.z * h.z;
                 let s2 = (1.0 - c2).max(0.0);
                 let tan2 = s2 / c2;
@@ -271,6 +278,7 @@ pub fn catalogue() -> Vec<Different> {
             BeckmannNdf,
             |p| {
                 p.beckmann_ndf = Some(|h, alpha| {
+                    let alpha = alpha.max(1e-4);
                     let c = h.z.min(1.0);
                     if c <= 1e-10 {
                         return 0.0;

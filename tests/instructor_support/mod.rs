@@ -4,6 +4,7 @@
 pub mod different;
 pub mod patch;
 pub mod wrong;
+pub mod wrong_integrators;
 
 use pbrlab::grade::checks::{TaskInput, grade_task, score};
 use pbrlab::grade::runner::{GradeOptions, prepare};

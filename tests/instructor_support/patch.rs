@@ -7,8 +7,12 @@
 
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
+use pbrlab::geometry::{Hit, Ray};
+use pbrlab::integrator::{DirectLight, Heuristic, Segment};
+use pbrlab::medium::{FreeFlight, Medium};
 use pbrlab::optics::{LayerStack, StackReport};
 use pbrlab::sampling::Sampler;
+use pbrlab::scene::Scene;
 use pbrlab::solutions as sol;
 use pbrlab::task_set::TaskSet;
 use pbrlab::worksheet::{TaskId, Tasks};
@@ -41,6 +45,9 @@ pub struct Patch {
     pub ndf_sample: Option<fn(&Patch, Vec3, f32, f32, Vec2) -> Option<Vec3>>,
     pub ndf_pdf: Option<fn(&Patch, Vec3, Vec3, f32, f32) -> f32>,
     pub brdf_check: Option<fn(&Patch, Brdf<'_>, &mut Sampler, usize) -> PlausibilityReport>,
+    pub path_trace: Option<fn(&Patch, &Scene, &Segment, i32, &mut Sampler) -> Vec3>,
+    pub mis: Option<fn(&Patch, &Scene, &Hit, Vec3, Heuristic, &mut Sampler) -> DirectLight>,
+    pub delta_tracking: Option<fn(&dyn Medium, &Ray, f32, u32, &mut Sampler) -> FreeFlight>,
     /// Panic, loop, abort, … (for isolation tests) in every function of `task` while that
     /// task is active.
     pub misbehave: Option<fn()>,
@@ -72,6 +79,9 @@ impl Patch {
             ndf_sample: None,
             ndf_pdf: None,
             brdf_check: None,
+            path_trace: None,
+            mis: None,
+            delta_tracking: None,
             misbehave: None,
             task,
         }
@@ -265,6 +275,53 @@ impl Tasks for Patch {
             ndf_pdf,
             |f| f(self, wo, wi, alpha_x, alpha_y),
             sol::ndf_sample::ndf_pdf(self, wo, wi, alpha_x, alpha_y)
+        )
+    }
+    fn path_trace(
+        &self,
+        scene: &Scene,
+        segment: &Segment,
+        depth: i32,
+        sampler: &mut Sampler,
+    ) -> Vec3 {
+        pick!(
+            self,
+            PathTrace,
+            path_trace,
+            |f| f(self, scene, segment, depth, sampler),
+            sol::path_trace::path_trace(self, scene, segment, depth, sampler)
+        )
+    }
+    fn mis(
+        &self,
+        scene: &Scene,
+        hit: &Hit,
+        wo: Vec3,
+        heuristic: Heuristic,
+        sampler: &mut Sampler,
+    ) -> DirectLight {
+        pick!(
+            self,
+            Mis,
+            mis,
+            |f| f(self, scene, hit, wo, heuristic, sampler),
+            sol::mis::mis(self, scene, hit, wo, heuristic, sampler)
+        )
+    }
+    fn delta_tracking(
+        &self,
+        medium: &dyn Medium,
+        ray: &Ray,
+        t_max: f32,
+        max_steps: u32,
+        sampler: &mut Sampler,
+    ) -> FreeFlight {
+        pick!(
+            self,
+            DeltaTracking,
+            delta_tracking,
+            |f| f(medium, ray, t_max, max_steps, sampler),
+            sol::delta_tracking::delta_tracking(medium, ray, t_max, max_steps, sampler)
         )
     }
     fn brdf_check(

@@ -31,8 +31,15 @@ fn ggx(h: Vec3, ax: f32, ay: f32) -> f32 {
     sol::aniso_ndf::aniso_ndf(h, ax, ay)
 }
 
-/// The catalogue.
+/// The catalogue: the closed-form tasks here, the integrator tasks in
+/// [`super::wrong_integrators`].
 pub fn catalogue() -> Vec<Wrong> {
+    let mut all = closed_form();
+    all.extend(super::wrong_integrators::catalogue());
+    all
+}
+
+fn closed_form() -> Vec<Wrong> {
     use TaskId::*;
     vec![
         // reflect

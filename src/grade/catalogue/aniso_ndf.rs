@@ -64,8 +64,10 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         analytic: 1.0,
         samples: 200_000,
         estimate: Box::new(move |s: &mut Sampler| {
-            let h = uniform_hemisphere(s.next_2d());
-            (t.aniso_ndf(h, 0.25, 0.5) * h.z / uniform_hemisphere_pdf()) as f64
+            Ok({
+                let h = uniform_hemisphere(s.next_2d());
+                (t.aniso_ndf(h, 0.25, 0.5) * h.z / uniform_hemisphere_pdf()) as f64
+            })
         }),
     }]
 }

@@ -53,12 +53,14 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         analytic: projected_solid_angle(&quad()),
         samples: 200_000,
         estimate: Box::new(move |s: &mut Sampler| {
-            let w = t.cosine_sample(s.next_2d());
-            if hits_rectangle(w, QUAD_Z, QUAD_X, QUAD_Y) {
-                (w.z / t.cosine_pdf(w)) as f64
-            } else {
-                0.0
-            }
+            Ok({
+                let w = t.cosine_sample(s.next_2d());
+                if hits_rectangle(w, QUAD_Z, QUAD_X, QUAD_Y) {
+                    (w.z / t.cosine_pdf(w)) as f64
+                } else {
+                    0.0
+                }
+            })
         }),
     }]
 }

@@ -10,16 +10,18 @@ mod beckmann_ndf;
 mod brdf_check;
 mod cook_torrance;
 mod cosine_sample;
+mod delta_tracking;
 mod fresnel_schlick;
 mod kajiya_kay;
+mod mis;
 mod ndf_sample;
+mod path_trace;
 mod phong;
 mod polygon;
 mod random;
 mod reflect;
 mod refract_stack;
 mod smith_g1;
-mod stability;
 
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
@@ -30,7 +32,6 @@ use crate::worksheet::{TaskId, Tasks};
 use anyhow::bail;
 
 pub use polygon::projected_solid_angle;
-pub use stability::cases as stability_cases;
 
 /// A value case before its expected output is known.
 #[derive(Clone, Debug, PartialEq)]
@@ -198,6 +199,18 @@ pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
         TaskId::AnisoNdf => aniso_ndf::estimators(t),
         TaskId::BeckmannNdf => beckmann_ndf::estimators(t),
         TaskId::NdfSample => ndf_sample::estimators(t),
+        TaskId::PathTrace => path_trace::estimators(t),
+        TaskId::Mis => mis::estimators(t),
+        TaskId::DeltaTracking => delta_tracking::estimators(t),
+        _ => Vec::new(),
+    }
+}
+
+/// Pairs of one estimator in two units of length, whose variances must agree (see the
+/// units check in [`super::checks`]).
+pub fn unit_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
+    match task {
+        TaskId::Mis => mis::unit_pairs(t),
         _ => Vec::new(),
     }
 }

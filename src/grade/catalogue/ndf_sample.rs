@@ -103,13 +103,13 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         name: "irradiance from a unit-radiance square light, NDF sampling".into(),
         analytic: projected_solid_angle(&quad()),
         samples: 200_000,
-        estimate: Box::new(
-            move |s: &mut Sampler| match t.ndf_sample(wo, ax, ay, s.next_2d()) {
+        estimate: Box::new(move |s: &mut Sampler| {
+            Ok(match t.ndf_sample(wo, ax, ay, s.next_2d()) {
                 Some(wi) if hits_rectangle(wi, QUAD_Z, QUAD_X, QUAD_Y) => {
                     (wi.z / t.ndf_pdf(wo, wi, ax, ay)) as f64
                 }
                 _ => 0.0,
-            },
-        ),
+            })
+        }),
     }]
 }

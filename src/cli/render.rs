@@ -1,0 +1,248 @@
+use crate::implementation::{ImplChoice, Student, student_has_attempted};
+use crate::render::{self, Film, RenderOptions, RenderOutput, output};
+use crate::scene::schema::Strategy;
+use crate::scene::{LoadOptions, Scene};
+use crate::worksheet::{TaskId, Tasks};
+use anyhow::{Context, Result, anyhow, bail};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::Instant;
+
+/// The scene `pbrlab render` renders when none is given.
+pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
+
+/// Arguments of `pbrlab render`.
+#[derive(clap::Args, Debug, Default)]
+pub struct Args {
+    /// The scene file (default: scenes/cornell.yaml).
+    pub scene: Option<PathBuf>,
+    /// Whose task code renders: `student` (yours), `reference`, or `mixed` (yours where
+    /// implemented, the reference for the rest).
+    #[arg(long = "impl", value_enum)]
+    pub implementation: Option<ImplChoice>,
+    /// Samples per pixel (overrides the scene's).
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// Seed (overrides the scene's).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Direct-light strategy (overrides the scene's).
+    #[arg(long, value_enum)]
+    pub strategy: Option<Strategy>,
+    /// Output image: an EXR and a PNG preview beside it (default: renders/SCENE.exr).
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Write render statistics (paths per CPU-second, …) as JSON to this file.
+    #[arg(long)]
+    pub stats: Option<PathBuf>,
+    /// Rendering threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Finds the scene file: as given, or the default scene (also looked for beside the
+/// crate's sources, so `cargo run` works from any directory).
+fn scene_path(given: Option<&Path>) -> PathBuf {
+    match given {
+        Some(p) => p.to_path_buf(),
+        None => {
+            let local = PathBuf::from(DEFAULT_SCENE);
+            if local.is_file() {
+                local
+            } else {
+                Path::new(env!("CARGO_MANIFEST_DIR")).join(DEFAULT_SCENE)
+            }
+        }
+    }
+}
+
+/// The tasks `scene` runs that the student has not written, in worksheet order.
+pub fn missing_student_tasks(scene: &Scene) -> Vec<TaskId> {
+    scene
+        .needs()
+        .all_tasks()
+        .iter()
+        .filter(|t| !student_has_attempted(*t))
+        .collect()
+}
+
+/// Renders a scene from the command line.
+pub fn run(args: Args) -> Result<()> {
+    let path = scene_path(args.scene.as_deref());
+    let options = LoadOptions {
+        spp: args.spp,
+        seed: args.seed,
+        strategy: args.strategy,
+        ..Default::default()
+    };
+    let scene = Scene::load(&path, &options).map_err(|e| anyhow!("{e}"))?;
+    for w in scene.warnings() {
+        eprintln!("warning: {w}");
+    }
+    let choice = args
+        .implementation
+        .unwrap_or(if cfg!(feature = "solutions") {
+            ImplChoice::Reference
+        } else {
+            ImplChoice::Student
+        });
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0))
+        .stack_size(64 << 20)
+        .build()
+        .context("cannot start the rendering threads")?;
+    let output_path = args.output.clone().unwrap_or_else(|| {
+        let stem = path
+            .file_stem()
+            .map_or("render".into(), |s| s.to_string_lossy().into_owned());
+        PathBuf::from("renders").join(format!("{stem}.exr"))
+    });
+    let job = Job {
+        scene: &scene,
+        output: &output_path,
+        progress: !args.quiet,
+    };
+    let out = match choice {
+        ImplChoice::Student => {
+            let missing = missing_student_tasks(&scene);
+            if !missing.is_empty() {
+                let list: Vec<String> = missing
+                    .iter()
+                    .map(|t| format!("{t} (exercises/{t}.rs)"))
+                    .collect();
+                bail!(
+                    "{} needs tasks you have not implemented yet: {}. Render with `--impl mixed` \
+                     to use the reference for those.",
+                    path.display(),
+                    list.join(", ")
+                );
+            }
+            pool.install(|| job.run(&Student))?
+        }
+        #[cfg(feature = "solutions")]
+        ImplChoice::Reference => pool.install(|| job.run(&crate::implementation::Reference))?,
+        #[cfg(feature = "solutions")]
+        ImplChoice::Mixed => {
+            let mine = crate::implementation::student_attempted();
+            let used: Vec<&str> = scene
+                .needs()
+                .all_tasks()
+                .iter()
+                .filter(|t| mine.contains(*t))
+                .map(TaskId::name)
+                .collect();
+            eprintln!(
+                "your code renders: {}",
+                if used.is_empty() {
+                    "nothing yet (all reference)".into()
+                } else {
+                    used.join(", ")
+                }
+            );
+            pool.install(|| job.run(&crate::implementation::Mixed::new(mine)))?
+        }
+        #[cfg(not(feature = "solutions"))]
+        ImplChoice::Reference | ImplChoice::Mixed => {
+            bail!("this build has no reference solutions: use `--impl student`")
+        }
+    };
+    let s = &out.stats;
+    if s.rejected_samples > 0 {
+        eprintln!(
+            "warning: {} samples were NaN, infinite or negative and were dropped",
+            s.rejected_samples
+        );
+    }
+    let (exr, png) = (
+        output_path.with_extension("exr"),
+        output_path.with_extension("png"),
+    );
+    println!("wrote {} and {}", exr.display(), png.display());
+    println!(
+        "{}×{} at {} spp in {:.2} s: {:.3} M paths/s, {:.3} M paths per CPU-second ({} threads, {:.1} M rays per CPU-second)",
+        s.width,
+        s.height,
+        s.spp,
+        s.wall_seconds,
+        s.paths_per_second * 1e-6,
+        s.paths_per_cpu_second * 1e-6,
+        s.threads,
+        s.rays_per_cpu_second * 1e-6
+    );
+    if let Some(stats_path) = &args.stats {
+        let json = serde_json::json!({
+            "scene": path.display().to_string(),
+            "impl": format!("{choice:?}").to_lowercase(),
+            "stats": s,
+        });
+        std::fs::write(stats_path, serde_json::to_string_pretty(&json)?)
+            .with_context(|| format!("cannot write {}", stats_path.display()))?;
+    }
+    Ok(())
+}
+
+/// One render from the command line: progress, checkpoints after passes, panics reported.
+struct Job<'a> {
+    scene: &'a Scene,
+    output: &'a Path,
+    progress: bool,
+}
+
+impl Job<'_> {
+    fn run<T: Tasks>(&self, t: &T) -> Result<RenderOutput> {
+        let last_write = Mutex::new(Instant::now());
+        let checkpoint = |film: &Film| {
+            let mut last = last_write.lock().unwrap_or_else(|e| e.into_inner());
+            if last.elapsed().as_secs_f64() >= 2.0 {
+                if let Err(e) = output::write_both(self.output, &film.mean()) {
+                    eprintln!("warning: could not save the current estimate: {e:#}");
+                }
+                *last = Instant::now();
+            }
+        };
+        let options = RenderOptions {
+            spp: self.scene.settings().spp,
+            seed: self.scene.settings().seed,
+            progress: self.progress,
+            on_pass: Some(&checkpoint),
+        };
+        let out = catch_task_panic(|| render::render(self.scene, t, &options))?;
+        output::write_both(self.output, &out.mean)?;
+        Ok(out)
+    }
+}
+
+/// Runs `f`, turning a panic (in task code, most likely) into an error that says where it
+/// happened and that the last saved estimate is kept.
+fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
+    let place: std::sync::Arc<Mutex<Option<String>>> = Default::default();
+    let hook = std::panic::take_hook();
+    let recorder = place.clone();
+    std::panic::set_hook(Box::new(move |info| {
+        let mut slot = recorder.lock().unwrap_or_else(|e| e.into_inner());
+        if slot.is_none() {
+            let message =
+                crate::implementation::panic_message(info.payload()).unwrap_or("(no message)");
+            let location = info.location().map_or("unknown place".to_string(), |l| {
+                format!("{}:{}", l.file(), l.line())
+            });
+            *slot = Some(format!("{location}: {message}"));
+        }
+    }));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    std::panic::set_hook(hook);
+    result.map_err(|_| {
+        let what = place
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .take()
+            .unwrap_or_else(|| "unknown place".into());
+        anyhow!(
+            "the render stopped: code panicked at {what}. The last saved estimate (if the \
+             render ran long enough to save one) is kept."
+        )
+    })
+}
