@@ -41,7 +41,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ImplChoice::Reference => run_with(crate::implementation::Reference, &args),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let imp = crate::implementation::Mixed::new(crate::implementation::student_attempted());
+            let imp = crate::implementation::Mixed::new(crate::implementation::student_written());
             run_with(imp, &args)
         }
         #[cfg(not(feature = "solutions"))]
