@@ -9,16 +9,20 @@ mod stability_support;
 use glam::Vec3;
 use indicatif::ProgressBar;
 use pbrlab::converge::builtin::{builtin, irradiance};
-use pbrlab::converge::{Strategy, StudyConfig, StudyResult, Summary, run_study, summarise};
+use pbrlab::converge::{Strategy, StudyConfig, StudyResult, run_study};
+#[cfg(feature = "solutions")]
+use pbrlab::converge::{Summary, summarise};
 use pbrlab::implementation::Student;
 use pbrlab::sampling::Sampler;
 use std::sync::Arc;
 
 /// Cosine-weighted sampling whose pdf is 5 % too large: every estimate is 5 % low.
+#[cfg(feature = "solutions")]
 struct BiasedCosine {
     skies: Arc<Vec<irradiance::Sky>>,
 }
 
+#[cfg(feature = "solutions")]
 impl Strategy for BiasedCosine {
     fn name(&self) -> &str {
         "cosine_pdf_5pc_high"
@@ -53,6 +57,7 @@ const CONFIG: StudyConfig = StudyConfig {
     seed: 11,
 };
 
+#[cfg(feature = "solutions")]
 fn summary<'a>(summaries: &'a [Summary], name: &str) -> &'a Summary {
     summaries.iter().find(|s| s.strategy == name).unwrap()
 }
