@@ -1,6 +1,8 @@
 //! The same seed gives the same image bit for bit, whatever the number of threads: every
 //! pixel has its own random stream.
 
+#![cfg(feature = "solutions")]
+
 use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, render};
 use pbrlab::scene::{LoadOptions, Scene};

@@ -1,5 +1,5 @@
 use crate::implementation::{ImplChoice, Student, student_has_attempted};
-use crate::render::{self, Film, RenderOptions, RenderOutput, output};
+use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::{TaskId, Tasks};
@@ -173,10 +173,22 @@ pub fn run(args: Args) -> Result<()> {
         s.rays_per_cpu_second * 1e-6
     );
     if let Some(stats_path) = &args.stats {
+        // Scenes with meshes also report the ray-casting rate against obvhs alone.
+        let rays = raycast::test_rays(&scene, 100_000, 1);
+        let raycast = raycast::compare_with_obvhs(&scene, &rays, 5);
+        if let Some(r) = &raycast {
+            println!(
+                "ray casting: {:.2} M rays/s through the scene, {:.2} M rays/s through obvhs alone: {:.1} %",
+                r.scene_rays_per_second * 1e-6,
+                r.obvhs_rays_per_second * 1e-6,
+                r.ratio * 100.0
+            );
+        }
         let json = serde_json::json!({
             "scene": path.display().to_string(),
             "impl": format!("{choice:?}").to_lowercase(),
             "stats": s,
+            "raycast_vs_obvhs": raycast,
         });
         std::fs::write(stats_path, serde_json::to_string_pretty(&json)?)
             .with_context(|| format!("cannot write {}", stats_path.display()))?;

@@ -1,10 +1,11 @@
-//! Shapes and ray intersection: analytic spheres and quads tested one by one, triangle
+//! Shapes and ray intersection: analytic spheres and quads tested four at a time, triangle
 //! meshes and hair fibres through a BVH each (built only when the scene has them).
 
 mod bvh;
 mod fibre;
 mod hit;
 mod mesh;
+mod packs;
 mod quad;
 mod ray;
 mod sphere;
@@ -19,17 +20,17 @@ pub use ray::Ray;
 pub use sphere::Sphere;
 pub use triangle::{WatertightRay, double_area};
 
+use packs::{QuadPack, Ray4, SpherePack, nearest_lane};
+
 /// A set of surfaces that rays can hit.
 #[derive(Default)]
 pub struct Geometry {
-    /// Analytic spheres.
-    pub spheres: Vec<Sphere>,
-    /// Analytic parallelograms (boxes are six of them).
-    pub quads: Vec<Quad>,
-    /// Mesh triangles, when the scene has meshes.
-    pub triangles: Option<TriangleSet>,
-    /// Hair fibre segments, when the scene has fibres.
-    pub fibres: Option<FibreSet>,
+    spheres: Vec<Sphere>,
+    quads: Vec<Quad>,
+    sphere_packs: Vec<SpherePack>,
+    quad_packs: Vec<QuadPack>,
+    triangles: Option<TriangleSet>,
+    fibres: Option<FibreSet>,
 }
 
 /// Which primitive a closest-hit search found.
@@ -42,6 +43,23 @@ enum Primitive {
 }
 
 impl Geometry {
+    /// A set of surfaces; the BVHs of `triangles` and `fibres` are built already.
+    pub fn new(
+        spheres: Vec<Sphere>,
+        quads: Vec<Quad>,
+        triangles: Option<TriangleSet>,
+        fibres: Option<FibreSet>,
+    ) -> Self {
+        Self {
+            sphere_packs: SpherePack::pack(&spheres),
+            quad_packs: QuadPack::pack(&quads),
+            spheres,
+            quads,
+            triangles,
+            fibres,
+        }
+    }
+
     /// True when there is nothing to hit.
     pub fn is_empty(&self) -> bool {
         self.spheres.is_empty()
@@ -50,21 +68,42 @@ impl Geometry {
             && self.fibres.is_none()
     }
 
+    /// The analytic spheres.
+    pub fn spheres(&self) -> &[Sphere] {
+        &self.spheres
+    }
+
+    /// The analytic quads (boxes are six of them).
+    pub fn quads(&self) -> &[Quad] {
+        &self.quads
+    }
+
+    /// The mesh triangles, when there are meshes.
+    pub fn triangles(&self) -> Option<&TriangleSet> {
+        self.triangles.as_ref()
+    }
+
+    /// The hair fibres, when there are fibres.
+    pub fn fibres(&self) -> Option<&FibreSet> {
+        self.fibres.as_ref()
+    }
+
     /// The nearest surface along `ray` in `(0, t_max)`.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let mut best = t_max;
         let mut found = None;
-        for (i, s) in self.spheres.iter().enumerate() {
-            if let Some(t) = s.intersect(ray, best) {
+        let r4 = Ray4::new(ray);
+        for (p, pack) in self.sphere_packs.iter().enumerate() {
+            if let Some((t, lane)) = nearest_lane(pack.intersect(&r4, best), best) {
                 best = t;
-                found = Some(Primitive::Sphere(i));
+                found = Some(Primitive::Sphere(4 * p + lane));
             }
         }
-        for (i, q) in self.quads.iter().enumerate() {
-            if let Some(t) = q.intersect(ray, best) {
+        for (p, pack) in self.quad_packs.iter().enumerate() {
+            if let Some((t, lane)) = nearest_lane(pack.intersect(&r4, best), best) {
                 best = t;
-                found = Some(Primitive::Quad(i));
+                found = Some(Primitive::Quad(4 * p + lane));
             }
         }
         if let Some(tris) = &self.triangles
@@ -90,11 +129,14 @@ impl Geometry {
     /// True when any surface lies along `ray` in `(0, t_max)`.
     #[inline]
     pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        self.quads.iter().any(|q| q.intersect(ray, t_max).is_some())
+        let r4 = Ray4::new(ray);
+        self.quad_packs
+            .iter()
+            .any(|p| p.intersect(&r4, t_max).cmplt(glam::Vec4::INFINITY).any())
             || self
-                .spheres
+                .sphere_packs
                 .iter()
-                .any(|s| s.intersect(ray, t_max).is_some())
+                .any(|p| p.intersect(&r4, t_max).cmplt(glam::Vec4::INFINITY).any())
             || self
                 .triangles
                 .as_ref()

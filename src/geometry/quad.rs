@@ -20,6 +20,8 @@ pub struct Quad {
     /// Dual basis: `u = (p − origin)·dual1`, `v = (p − origin)·dual2`.
     dual1: Vec3,
     dual2: Vec3,
+    /// Shading frame (the same at every point).
+    frame: Frame,
     /// The shape this quad belongs to.
     pub shape: ShapeId,
 }
@@ -43,8 +45,19 @@ impl Quad {
             plane: n.dot(origin),
             dual1,
             dual2,
+            frame: Frame::from_normal_tangent(n, edge1),
             shape,
         })
+    }
+
+    /// The first vector of the dual basis (`u = (p − origin)·dual1`).
+    pub fn dual1(&self) -> Vec3 {
+        self.dual1
+    }
+
+    /// The second vector of the dual basis (`v = (p − origin)·dual2`).
+    pub fn dual2(&self) -> Vec3 {
+        self.dual2
     }
 
     /// Surface area.
@@ -80,7 +93,7 @@ impl Quad {
             t,
             p,
             n: self.n,
-            frame: Frame::from_normal_tangent(self.n, self.edge1),
+            frame: self.frame,
             shape: self.shape,
             epsilon: offset_epsilon(p),
             fibre: false,

@@ -9,6 +9,7 @@ mod cpu_time;
 mod film;
 mod image;
 pub mod output;
+pub mod raycast;
 
 pub use cpu_time::process_cpu_seconds;
 pub use film::{Film, PixelSums};

@@ -98,17 +98,40 @@ struct Builder<'a> {
     warnings: Vec<SceneWarning>,
 }
 
+/// The primitives of one [`Geometry`], collected before its BVHs are built.
+#[derive(Default)]
+struct GeometryParts {
+    spheres: Vec<Sphere>,
+    quads: Vec<Quad>,
+    triangles: Vec<[Vec3; 3]>,
+    triangle_shapes: Vec<u32>,
+    fibres: Vec<FibreSegment>,
+    fibre_shapes: Vec<u32>,
+}
+
+impl GeometryParts {
+    fn is_empty(&self) -> bool {
+        self.spheres.is_empty()
+            && self.quads.is_empty()
+            && self.triangles.is_empty()
+            && self.fibres.is_empty()
+    }
+
+    /// Builds the geometry: a BVH only for what has triangles or fibres.
+    fn build(self) -> Geometry {
+        let triangles = (!self.triangles.is_empty())
+            .then(|| TriangleSet::new(self.triangles, self.triangle_shapes));
+        let fibres =
+            (!self.fibres.is_empty()).then(|| FibreSet::new(self.fibres, self.fibre_shapes));
+        Geometry::new(self.spheres, self.quads, triangles, fibres)
+    }
+}
+
 /// Everything collected while going through the shapes.
 #[derive(Default)]
 struct Parts {
-    surfaces: Geometry,
-    boundaries: Geometry,
-    triangles: Vec<[Vec3; 3]>,
-    triangle_shapes: Vec<u32>,
-    boundary_triangles: Vec<[Vec3; 3]>,
-    boundary_triangle_shapes: Vec<u32>,
-    fibres: Vec<FibreSegment>,
-    fibre_shapes: Vec<u32>,
+    surfaces: GeometryParts,
+    boundaries: GeometryParts,
     shapes: Vec<ShapeInfo>,
     lights: Vec<Light>,
     media: Vec<SceneMedium>,
@@ -200,25 +223,6 @@ impl Builder<'_> {
 
         let settings = self.settings(&spec, &parts)?;
 
-        if !parts.triangles.is_empty() {
-            parts.surfaces.triangles = Some(TriangleSet::new(
-                std::mem::take(&mut parts.triangles),
-                std::mem::take(&mut parts.triangle_shapes),
-            ));
-        }
-        if !parts.boundary_triangles.is_empty() {
-            parts.boundaries.triangles = Some(TriangleSet::new(
-                std::mem::take(&mut parts.boundary_triangles),
-                std::mem::take(&mut parts.boundary_triangle_shapes),
-            ));
-        }
-        if !parts.fibres.is_empty() {
-            parts.surfaces.fibres = Some(FibreSet::new(
-                std::mem::take(&mut parts.fibres),
-                std::mem::take(&mut parts.fibre_shapes),
-            ));
-        }
-
         let used_materials: TaskSet = parts
             .shapes
             .iter()
@@ -232,11 +236,11 @@ impl Builder<'_> {
         };
         let mut tasks = used_materials;
         tasks.insert(integrator);
-        let geometry_count = |g: &Geometry| {
+        let geometry_count = |g: &GeometryParts| {
             (
                 g.spheres.len() + g.quads.len(),
-                g.triangles.as_ref().map_or(0, TriangleSet::len),
-                g.fibres.as_ref().map_or(0, FibreSet::len),
+                g.triangles.len(),
+                g.fibres.len(),
             )
         };
         let (sa, st, sf) = geometry_count(&parts.surfaces);
@@ -251,12 +255,12 @@ impl Builder<'_> {
         };
 
         let lights = (!parts.lights.is_empty()).then(|| Lights::new(parts.lights, shape_count));
-        let boundaries = (!parts.boundaries.is_empty()).then_some(parts.boundaries);
+        let boundaries = (!parts.boundaries.is_empty()).then(|| parts.boundaries.build());
         Ok(Scene {
             file: self.file.to_path_buf(),
             camera,
             settings,
-            surfaces: parts.surfaces,
+            surfaces: parts.surfaces.build(),
             boundaries,
             shapes: parts.shapes,
             materials,
@@ -720,17 +724,15 @@ impl Builder<'_> {
                 }
                 bounds = (lo, hi);
                 let count = obj.triangles.len();
-                if is_boundary {
-                    parts.boundary_triangles.extend(obj.triangles);
-                    parts
-                        .boundary_triangle_shapes
-                        .extend(std::iter::repeat_n(shape_id, count));
+                let target = if is_boundary {
+                    &mut parts.boundaries
                 } else {
-                    parts.triangles.extend(obj.triangles);
-                    parts
-                        .triangle_shapes
-                        .extend(std::iter::repeat_n(shape_id, count));
-                }
+                    &mut parts.surfaces
+                };
+                target.triangles.extend(obj.triangles);
+                target
+                    .triangle_shapes
+                    .extend(std::iter::repeat_n(shape_id, count));
             }
             ShapeSpec::Fibres {
                 strands: source,
@@ -781,15 +783,15 @@ impl Builder<'_> {
                 };
                 for line in &polylines {
                     for pair in line.windows(2) {
-                        parts.fibres.push(FibreSegment {
+                        parts.surfaces.fibres.push(FibreSegment {
                             a: pair[0],
                             b: pair[1],
                             radius: radius.0,
                         });
-                        parts.fibre_shapes.push(shape_id);
+                        parts.surfaces.fibre_shapes.push(shape_id);
                     }
                 }
-                if parts.fibres.len() > strands::MAX_SEGMENTS {
+                if parts.surfaces.fibres.len() > strands::MAX_SEGMENTS {
                     return Err(self.error(
                         &at,
                         format!(
