@@ -7,9 +7,9 @@
 mod instructor_support;
 
 use instructor_support::{different, grade, graded_tasks, inputs, messages, wrong};
+use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
-use pbrlab::implementation::{Reference, Student};
-use pbrlab::task_set::TaskSet;
+use pbrlab::implementation::{ImplChoice, Reference, Student};
 use pbrlab::worksheet::TaskId;
 
 #[test]
@@ -47,18 +47,33 @@ fn the_shipped_stubs_score_zero_as_not_attempted() {
     }
 }
 
+/// The tasks that call `task` through the implementation (directly or through others).
+fn dependents(task: TaskId) -> Vec<TaskId> {
+    TaskId::ALL
+        .into_iter()
+        .filter(|t| *t != task && depends_on(*t, task))
+        .collect()
+}
+
+fn depends_on(t: TaskId, on: TaskId) -> bool {
+    t.info()
+        .needs
+        .iter()
+        .any(|n| *n == on || depends_on(*n, on))
+}
+
+/// Each wrong implementation fails its task, and the tasks built on it still pass when
+/// graded the way the grader grades them (`student_tasks_for`): the mistake is charged once.
+/// Tasks that do not call it run the reference only, which `the_reference_scores_full_marks`
+/// covers.
 #[test]
 fn every_wrong_implementation_fails_its_own_task_and_only_it() {
     let inputs = inputs(1);
-    let tasks = graded_tasks(&inputs);
     let mut report = Vec::new();
     for w in wrong::catalogue() {
-        for &task in &tasks {
-            let (status, points, checks) = grade(
-                &w.patch.only([task].into_iter().collect()),
-                task,
-                &inputs[&task],
-            );
+        for task in std::iter::once(w.task).chain(dependents(w.task)) {
+            let student = student_tasks_for(task, ImplChoice::Student, &[]);
+            let (status, points, checks) = grade(&w.patch.only(student), task, &inputs[&task]);
             if task == w.task {
                 if status == TaskStatus::Passed || points >= task.info().points as f64 {
                     report.push(format!("{task}: `{}` was not caught", w.name));
@@ -109,10 +124,12 @@ fn a_wrong_dependency_is_blamed_on_its_own_task() {
         .expect("a wrong smith_g1");
     let ct = TaskId::CookTorrance;
     // Graded alone, cook_torrance runs on the reference smith_g1 and passes.
-    let alone = wrong_g1.patch.only([ct].into_iter().collect());
+    let alone = wrong_g1
+        .patch
+        .only(student_tasks_for(ct, ImplChoice::Student, &[]));
     assert_eq!(grade(&alone, ct, &inputs[&ct]).0, TaskStatus::Passed);
     // With the student's smith_g1 behind it (`--impl mixed`), it fails too.
-    let both: TaskSet = [ct, TaskId::SmithG1].into_iter().collect();
+    let both = student_tasks_for(ct, ImplChoice::Mixed, &[ct, TaskId::SmithG1]);
     assert_eq!(
         grade(&wrong_g1.patch.only(both), ct, &inputs[&ct]).0,
         TaskStatus::Failed

@@ -101,9 +101,9 @@ pub fn repeat(
                 rates.failures += 1;
                 if rates.example.is_none() {
                     rates.example = Some(format!(
-                        "seed {}: {}",
+                        "seed {}:\n{}",
                         seeded.seed,
-                        super::report::text(&report)
+                        super::report::details(t)
                     ));
                 }
             }
@@ -147,6 +147,11 @@ impl Calibration {
                 t.declared_alpha,
                 t.excess_p_value(self.runs),
             );
+        }
+        for t in &self.tasks {
+            if let Some(example) = &t.example {
+                let _ = writeln!(s, "{}, first failure at {}", t.task, example.trim_end());
+            }
         }
         let p: Vec<f64> = self
             .tasks

@@ -7,6 +7,7 @@ use super::isolation::{self, Launcher};
 use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
 use super::worker::{ImplSpec, Job, JobKind, Record};
 use crate::implementation::ImplChoice;
+use crate::task_set::TaskSet;
 use crate::worksheet::TaskId;
 use anyhow::bail;
 use std::collections::BTreeMap;
@@ -153,33 +154,39 @@ pub fn probe_attempted(launcher: &Launcher, options: &GradeOptions) -> Vec<TaskI
         .collect()
 }
 
-/// Which implementation grades `task`.
+/// The tasks whose student code runs while `task` is graded: the task alone for `student`
+/// (so a mistake in a task it builds on is charged to that task only), every attempted task
+/// for `mixed`, none for `reference`.
+pub fn student_tasks_for(task: TaskId, choice: ImplChoice, attempted: &[TaskId]) -> TaskSet {
+    match choice {
+        ImplChoice::Reference => TaskSet::EMPTY,
+        ImplChoice::Student => [task].into_iter().collect(),
+        ImplChoice::Mixed => attempted.iter().copied().collect(),
+    }
+}
+
+/// Which implementation grades `task`. Without the reference compiled in, only the student's
+/// own code can run.
 fn spec_for(
     task: TaskId,
     options: &GradeOptions,
     attempted: &[TaskId],
 ) -> anyhow::Result<ImplSpec> {
-    let names = |tasks: &[TaskId]| tasks.iter().map(|t| t.name().to_string()).collect();
-    Ok(match options.implementation {
-        ImplChoice::Reference => {
-            if !cfg!(feature = "solutions") {
-                bail!(
-                    "--impl reference needs the reference solutions, which this build does not have"
-                );
-            }
-            ImplSpec::Reference
+    if !cfg!(feature = "solutions") {
+        if options.implementation != ImplChoice::Student {
+            bail!(
+                "--impl {} needs the reference solutions, which this build does not have",
+                format!("{:?}", options.implementation).to_lowercase()
+            );
         }
-        ImplChoice::Student if cfg!(feature = "solutions") => ImplSpec::Mixed {
-            student: names(&[task]),
-        },
-        ImplChoice::Student => ImplSpec::Student,
-        ImplChoice::Mixed => {
-            if !cfg!(feature = "solutions") {
-                bail!("--impl mixed needs the reference solutions, which this build does not have");
-            }
-            ImplSpec::Mixed {
-                student: names(attempted),
-            }
+        return Ok(ImplSpec::Student);
+    }
+    let student = student_tasks_for(task, options.implementation, attempted);
+    Ok(if student.is_empty() {
+        ImplSpec::Reference
+    } else {
+        ImplSpec::Mixed {
+            student: student.iter().map(|t| t.name().to_string()).collect(),
         }
     })
 }

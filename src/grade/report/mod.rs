@@ -9,7 +9,7 @@ mod text;
 
 pub use gradescope::gradescope;
 pub use html::write_html;
-pub use text::text;
+pub use text::{details, text};
 
 /// The output formats of `pbrlab grade --format`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
