@@ -20,6 +20,7 @@
 
 pub mod bsdf;
 pub mod cli;
+pub mod converge;
 pub mod geometry;
 pub mod grade;
 pub mod implementation;
@@ -28,9 +29,11 @@ pub mod light;
 pub mod math;
 pub mod medium;
 pub mod optics;
+pub mod panic_hook;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod stability;
 pub mod task_set;
 pub mod worksheet;
 

@@ -453,7 +453,28 @@ macro_rules! tasks {
         ///
         /// Conventions are those of [`crate::worksheet`]: directions point away from the
         /// surface; in the local frame the normal is +z.
-        pub trait Tasks: Sync {
+        ///
+        /// With the `solutions` feature every method defaults to the reference, so a test
+        /// implementation (a known-wrong variant, a correct-but-different one) overrides only
+        /// the functions it changes; calls it does not override reach the reference with the
+        /// test implementation as `t`, so its change propagates as a student's would.
+        #[cfg(feature = "solutions")]
+        pub trait Tasks: Sync + Sized {
+            $($(
+                $(#[$doc])*
+                fn $name(&self, $($arg: $ty),*) -> $ret {
+                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                }
+            )+)+
+        }
+
+        /// Every task function of the worksheet: the interface the renderer and the grader
+        /// are generic over (the handout build, without reference defaults).
+        ///
+        /// Conventions are those of [`crate::worksheet`]: directions point away from the
+        /// surface; in the local frame the normal is +z.
+        #[cfg(not(feature = "solutions"))]
+        pub trait Tasks: Sync + Sized {
             $($(
                 $(#[$doc])*
                 fn $name(&self, $($arg: $ty),*) -> $ret;
@@ -469,13 +490,7 @@ macro_rules! tasks {
         }
 
         #[cfg(feature = "solutions")]
-        impl Tasks for crate::implementation::Reference {
-            $($(
-                fn $name(&self, $($arg: $ty),*) -> $ret {
-                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
-                }
-            )+)+
-        }
+        impl Tasks for crate::implementation::Reference {}
 
         #[cfg(feature = "solutions")]
         impl Tasks for crate::implementation::Mixed {

@@ -1,8 +1,10 @@
 //! The `pbrlab` command line: one file per subcommand.
 
+mod converge;
 mod hint;
 mod needs;
 pub mod render;
+mod stability;
 mod tasks;
 
 use clap::{Parser, Subcommand};
@@ -27,6 +29,10 @@ pub enum Command {
     Render(render::Args),
     /// Show the tasks and subsystems a scene needs.
     Needs(needs::Args),
+    /// Run every task on stiff and extreme inputs (grazing angles, α → 0, the critical angle, …).
+    Stability(stability::Args),
+    /// Error against run time for each sampling strategy: CSV, log-log plot and slopes.
+    Converge(converge::Args),
 }
 
 /// Runs the command line.
@@ -36,6 +42,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Needs(args)) => needs::run(args),
+        Some(Command::Stability(args)) => stability::run(args),
+        Some(Command::Converge(args)) => converge::run(args),
         None => render::run(render::Args::default()),
     }
 }

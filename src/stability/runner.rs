@@ -1,0 +1,166 @@
+//! Runs stability cases on worker threads with a time limit, so that student code that
+//! panics, stops at `todo!()` or never returns gets a verdict instead of taking the run
+//! down.
+
+use super::case::Case;
+use super::expect::Expect;
+use super::value::Value;
+use super::verdict::Verdict;
+use crate::implementation::{is_todo_panic, panic_message};
+use crate::panic_hook::QuietPanics;
+use crate::worksheet::{TaskId, Tasks};
+use serde::Serialize;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::{Duration, Instant};
+
+/// The time limit per case that the command line uses unless told otherwise. Every case
+/// of a sane implementation takes well under a millisecond (the slowest, 10⁵ reflections,
+/// about one).
+pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(2);
+
+/// The result of one case on one implementation.
+#[derive(Clone, Debug, Serialize)]
+pub struct Outcome {
+    /// The task the case belongs to.
+    #[serde(serialize_with = "serialize_task")]
+    pub task: TaskId,
+    /// The case's name (`smith_g1/back_facing`).
+    pub case: &'static str,
+    /// The input in words.
+    pub input: &'static str,
+    /// The expectation in words.
+    pub expected: String,
+    /// What the task returned; `None` when it panicked, stopped at `todo!()` or hung.
+    pub value: Option<Value>,
+    /// The value as shown in a table: for records, only the fields the case checks, plus
+    /// any that are not finite.
+    pub value_text: String,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// The panic message, for [`Verdict::Panic`].
+    pub message: Option<String>,
+    /// What a robust implementation does on this input.
+    pub guard: &'static str,
+    /// Wall-clock seconds the task took (the time limit for a hang).
+    pub seconds: f64,
+}
+
+fn serialize_task<S: serde::Serializer>(task: &TaskId, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(task.name())
+}
+
+/// How a worker's call ended.
+enum Ended {
+    Returned(Value),
+    Todo,
+    Panicked(String),
+}
+
+/// Runs one case on `imp` on its own thread and judges the result. A call that has not
+/// returned after `timeout` is reported as [`Verdict::Hang`]; its thread cannot be
+/// stopped, so it is left running (a process that ran a hanging case should exit when it
+/// is done, which ends such threads).
+///
+/// Panics are caught on the worker; the panic hook should be silenced around the call
+/// (as [`run_cases`] does) or each student panic prints its message.
+pub fn run_case<T>(case: &Case<T>, imp: &T, timeout: Duration) -> Outcome
+where
+    T: Tasks + Clone + Send + 'static,
+{
+    let (tx, rx) = mpsc::channel();
+    let eval = case.eval;
+    let worker_imp = imp.clone();
+    let spawned = std::thread::Builder::new()
+        .name(format!("stability {}", case.name))
+        .spawn(move || {
+            let start = Instant::now();
+            let ended = match catch_unwind(AssertUnwindSafe(|| eval(&worker_imp))) {
+                Ok(value) => Ended::Returned(value),
+                Err(payload) if is_todo_panic(payload.as_ref()) => Ended::Todo,
+                Err(payload) => Ended::Panicked(
+                    panic_message(payload.as_ref())
+                        .unwrap_or("panic with a non-string payload")
+                        .to_owned(),
+                ),
+            };
+            // The receiver is gone only if the case already timed out.
+            let _ = tx.send((ended, start.elapsed()));
+        });
+    let received = match spawned {
+        Ok(_) => rx.recv_timeout(timeout),
+        Err(e) => Ok((
+            Ended::Panicked(format!("could not start a worker thread: {e}")),
+            Duration::ZERO,
+        )),
+    };
+    let (value, verdict, message, elapsed) = match received {
+        Ok((Ended::Returned(v), t)) => {
+            let verdict = case.judge(&v);
+            (Some(v), verdict, None, t)
+        }
+        Ok((Ended::Todo, t)) => (None, Verdict::NotAttempted, None, t),
+        Ok((Ended::Panicked(m), t)) => (None, Verdict::Panic, Some(m), t),
+        Err(RecvTimeoutError::Timeout) => (None, Verdict::Hang, None, timeout),
+        Err(RecvTimeoutError::Disconnected) => (
+            None,
+            Verdict::Panic,
+            Some("the worker thread ended without a result".into()),
+            Duration::ZERO,
+        ),
+    };
+    Outcome {
+        task: case.task,
+        case: case.name,
+        input: case.input,
+        expected: case.expected_text(),
+        value_text: value
+            .as_ref()
+            .map_or_else(|| "—".to_owned(), |v| shown(case, v)),
+        value,
+        verdict,
+        message,
+        guard: case.guard,
+        seconds: elapsed.as_secs_f64(),
+    }
+}
+
+/// Runs every case in order, calling `on_outcome` as each one finishes (so a caller can
+/// print results as they come and lose nothing if a later case brings the process down),
+/// and returns all outcomes. The panic hook is silenced for the duration; concurrent
+/// calls run one after the other because the hook is global to the process.
+pub fn run_cases<T>(
+    cases: &[Case<T>],
+    imp: &T,
+    timeout: Duration,
+    mut on_outcome: impl FnMut(&Outcome),
+) -> Vec<Outcome>
+where
+    T: Tasks + Clone + Send + 'static,
+{
+    let _quiet = QuietPanics::new();
+    cases
+        .iter()
+        .map(|case| {
+            let outcome = run_case(case, imp, timeout);
+            on_outcome(&outcome);
+            outcome
+        })
+        .collect()
+}
+
+/// The value as a table shows it: records are cut down to the fields the expectation
+/// names, plus any field that is not finite (the culprit of a NaN verdict).
+fn shown<T>(case: &Case<T>, value: &Value) -> String {
+    match (value, &case.expect) {
+        (Value::Record(fields), Expect::Fields(bounds)) => {
+            let kept: Vec<(String, f64)> = fields
+                .iter()
+                .filter(|(name, x)| !x.is_finite() || bounds.iter().any(|(b, _)| b == name))
+                .cloned()
+                .collect();
+            Value::Record(kept).to_string()
+        }
+        _ => value.to_string(),
+    }
+}

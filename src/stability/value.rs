@@ -1,0 +1,176 @@
+use glam::Vec3;
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+/// What a task function returned on one stability case, widened to f64 so f32 and f64
+/// tasks compare alike. Non-finite numbers are kept as they are: spotting them is the point.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// The task returned `None` (for example "no refraction: total internal reflection").
+    Absent,
+    /// One number.
+    Scalar(f64),
+    /// A vector (a direction or an RGB triple).
+    Vector([f64; 3]),
+    /// Named numbers: a struct the task returned, or a summary a case computed from many
+    /// calls (for example the smallest `wi.z` over a grid of samples).
+    Record(Vec<(String, f64)>),
+}
+
+impl Value {
+    /// Every number in the value, in order (none for [`Value::Absent`]).
+    pub fn numbers(&self) -> Vec<f64> {
+        match self {
+            Value::Absent => Vec::new(),
+            Value::Scalar(x) => vec![*x],
+            Value::Vector(v) => v.to_vec(),
+            Value::Record(fields) => fields.iter().map(|(_, x)| *x).collect(),
+        }
+    }
+
+    /// The field `name` of a [`Value::Record`].
+    pub fn field(&self, name: &str) -> Option<f64> {
+        match self {
+            Value::Record(fields) => fields.iter().find(|(n, _)| n == name).map(|(_, x)| *x),
+            _ => None,
+        }
+    }
+
+    /// A record from `(name, number)` pairs.
+    pub fn record<'a>(fields: impl IntoIterator<Item = (&'a str, f64)>) -> Value {
+        Value::Record(fields.into_iter().map(|(n, x)| (n.to_owned(), x)).collect())
+    }
+}
+
+impl From<f32> for Value {
+    fn from(x: f32) -> Self {
+        Value::Scalar(x as f64)
+    }
+}
+
+impl From<f64> for Value {
+    fn from(x: f64) -> Self {
+        Value::Scalar(x)
+    }
+}
+
+impl From<Vec3> for Value {
+    fn from(v: Vec3) -> Self {
+        Value::Vector([v.x as f64, v.y as f64, v.z as f64])
+    }
+}
+
+impl<T: Into<Value>> From<Option<T>> for Value {
+    fn from(x: Option<T>) -> Self {
+        x.map_or(Value::Absent, Into::into)
+    }
+}
+
+/// Formats a number for a table: about seven significant digits, scientific notation for
+/// very large or small magnitudes, and `NaN` / `inf` / `-inf` spelled out.
+pub fn format_number(x: f64) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.into();
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let magnitude = x.abs().log10().floor();
+    if !(-3.0..6.0).contains(&magnitude) {
+        let s = format!("{x:.6e}");
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
+    }
+    let decimals = (6.0 - magnitude) as usize;
+    let s = format!("{x:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').into()
+    } else {
+        s
+    }
+}
+
+impl std::fmt::Display for Value {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Value::Absent => f.write_str("None"),
+            Value::Scalar(x) => f.write_str(&format_number(*x)),
+            Value::Vector(v) => write!(
+                f,
+                "({}, {}, {})",
+                format_number(v[0]),
+                format_number(v[1]),
+                format_number(v[2])
+            ),
+            Value::Record(fields) => {
+                let parts: Vec<String> = fields
+                    .iter()
+                    .map(|(n, x)| format!("{n}={}", format_number(*x)))
+                    .collect();
+                f.write_str(&parts.join(", "))
+            }
+        }
+    }
+}
+
+/// A number for JSON: finite numbers as numbers, the others as the strings `"NaN"`, `"inf"`
+/// and `"-inf"` (JSON has no non-finite numbers, and serde_json would write `null`).
+struct JsonNumber(f64);
+
+impl Serialize for JsonNumber {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if self.0.is_finite() {
+            s.serialize_f64(self.0)
+        } else {
+            s.serialize_str(&format_number(self.0))
+        }
+    }
+}
+
+/// JSON form: `null` for [`Value::Absent`], a number, an array of three, or an object.
+impl Serialize for Value {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Value::Absent => s.serialize_none(),
+            Value::Scalar(x) => JsonNumber(*x).serialize(s),
+            Value::Vector(v) => v.map(JsonNumber).serialize(s),
+            Value::Record(fields) => {
+                let mut map = s.serialize_map(Some(fields.len()))?;
+                for (name, x) in fields {
+                    map.serialize_entry(name, &JsonNumber(*x))?;
+                }
+                map.end()
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_formatted_to_seven_digits() {
+        assert_eq!(format_number(1.0 / std::f64::consts::PI), "0.3183099");
+        assert_eq!(format_number(318309.886), "318309.9");
+        assert_eq!(format_number(31830988.6), "3.183099e7");
+        assert_eq!(format_number(4e-8), "4e-8");
+        assert_eq!(format_number(3.999_999_92e-8), "4e-8");
+        assert_eq!(format_number(-2.5e-9), "-2.5e-9");
+        assert_eq!(format_number(0.5), "0.5");
+        assert_eq!(format_number(f64::NAN), "NaN");
+        assert_eq!(format_number(f64::NEG_INFINITY), "-inf");
+    }
+
+    #[test]
+    fn json_keeps_non_finite_numbers_visible() {
+        let v = Value::Vector([1.0, f64::NAN, f64::INFINITY]);
+        assert_eq!(serde_json::to_string(&v).unwrap(), r#"[1.0,"NaN","inf"]"#);
+        assert_eq!(serde_json::to_string(&Value::Absent).unwrap(), "null");
+        let r = Value::record([("pdf", 0.5)]);
+        assert_eq!(serde_json::to_string(&r).unwrap(), r#"{"pdf":0.5}"#);
+    }
+}
