@@ -304,6 +304,12 @@ fn media_need_light_sampling_and_boundaries_take_no_material() {
 }
 
 #[test]
+fn camera_inside_a_medium() {
+    let text = "camera: {eye: [0, 0, 0.5], target: [0, 0, 0], fov: 40, width: 8, height: 8}\nmedia: {fog: {homogeneous: {sigma_a: 0.1, sigma_s: 0.1}}}\nshapes:\n  - sphere: {center: [0, 0, 0], radius: 1, medium: fog}\nlights: [environment: {radiance: 1}]\n";
+    assert_error_at(text, 4, 5, "camera is inside");
+}
+
+#[test]
 fn conductor_needs_one_roughness_and_one_colour() {
     let text = format!("{CAMERA}materials:\n  metal: {{conductor: {{roughness: 0.3}}}}\n");
     assert_error_at(&text, 3, 10, "`reflectance` or both `eta` and `k`");

@@ -218,3 +218,56 @@ fn an_absorbing_ball_follows_beer_lambert() {
     // Edge rays of the pixel cross slightly shorter chords: allow for that too.
     assert!((got - want).abs() < 4.5 * se + 0.01, "{got} vs {want}");
 }
+
+/// Henyey-Greenstein sampling follows its own density: the mean cosine of the deflection
+/// is g, and the sampled deflection cosines fall into bins in proportion to the integral of
+/// the phase function over each bin.
+#[test]
+fn henyey_greenstein_sampling_matches_its_density() {
+    use pbrlab::medium::HenyeyGreenstein;
+    let wo = Vec3::new(0.3, -0.4, 0.866).normalize();
+    for g in [-0.7f32, 0.0, 0.3, 0.9] {
+        let phase = HenyeyGreenstein { g };
+        let mut sampler = Sampler::new(8, 0);
+        let n = 200_000;
+        let bins = 20;
+        let mut counts = vec![0usize; bins];
+        let mut mean_cos = 0.0f64;
+        for _ in 0..n {
+            let wi = phase.sample(wo, sampler.next_2d());
+            let cos = -wo.dot(wi);
+            mean_cos += cos as f64 / n as f64;
+            counts[(((cos + 1.0) / 2.0 * bins as f32) as usize).min(bins - 1)] += 1;
+        }
+        assert!(
+            (mean_cos - g as f64).abs() < 0.01,
+            "g = {g}: mean cosine {mean_cos}"
+        );
+        for (b, &count) in counts.iter().enumerate() {
+            // ∫ p dω over the bin = 2π ∫ p(cos) dcos, by the midpoint rule on 50 points.
+            let (lo, hi) = (
+                -1.0 + 2.0 * b as f64 / bins as f64,
+                -1.0 + 2.0 * (b + 1) as f64 / bins as f64,
+            );
+            let expected: f64 = (0..50)
+                .map(|k| {
+                    let c = lo + (hi - lo) * (k as f64 + 0.5) / 50.0;
+                    let denom = 1.0 + (g * g) as f64 - 2.0 * g as f64 * c;
+                    (1.0 - (g * g) as f64) / (2.0 * denom.powf(1.5)) * (hi - lo) / 50.0
+                })
+                .sum::<f64>()
+                * n as f64;
+            let z = (count as f64 - expected) / expected.max(1.0).sqrt();
+            assert!(
+                z.abs() < 5.0,
+                "g = {g}, bin {b}: {count} samples, {expected:.0} expected"
+            );
+        }
+        // The value the renderer evaluates agrees with the density sampled from.
+        let wi = phase.sample(wo, glam::Vec2::new(0.37, 0.61));
+        let c = -wo.dot(wi) as f64;
+        let p = (1.0 - (g * g) as f64)
+            / (4.0 * std::f64::consts::PI * (1.0 + (g * g) as f64 - 2.0 * g as f64 * c).powf(1.5));
+        assert!((phase.eval(wo, wi) as f64 - p).abs() < 1e-4 * p.max(1.0));
+    }
+}

@@ -123,3 +123,23 @@ fn the_probes_of_the_integrator_tasks_run_the_reference() {
         );
     }
 }
+
+#[test]
+fn strands_from_a_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("hair.txt"),
+        "# two strands\n0 0 0\n0 0.5 0\n0.1 1 0\n\n0.3 0 0\n0.3 1 0.1\n",
+    )
+    .unwrap();
+    let text = "camera: {eye: [0, 0.5, 3], target: [0, 0.5, 0], fov: 40, width: 16, height: 16}\n\
+                materials: {hair: {kajiya_kay: {kd: 0.2, ks: 0.3, exponent: 30}}}\n\
+                shapes: [fibres: {strands: {file: hair.txt}, radius: 0.02, material: hair}]\n\
+                lights: [environment: {radiance: 1}]\n";
+    let file = dir.path().join("s.yaml");
+    std::fs::write(&file, text).unwrap();
+    let scene = Scene::load(&file, &LoadOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(scene.needs().fibre_segments, 3);
+    let out = render(&scene, &Reference, &RenderOptions::from_scene(&scene));
+    assert!(out.mean.mean().max_element() > 0.0);
+}

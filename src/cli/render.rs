@@ -6,7 +6,6 @@ use crate::worksheet::{TaskId, Tasks};
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-use std::time::Instant;
 
 /// The scene `pbrlab render` renders when none is given.
 pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
@@ -215,14 +214,11 @@ struct Job<'a> {
 
 impl Job<'_> {
     fn run<T: Tasks>(&self, t: &T) -> Result<RenderOutput> {
-        let last_write = Mutex::new(Instant::now());
+        // Saving costs milliseconds and passes double in length, so every pass is saved:
+        // an interrupted render keeps its last complete pass.
         let checkpoint = |film: &Film| {
-            let mut last = last_write.lock().unwrap_or_else(|e| e.into_inner());
-            if last.elapsed().as_secs_f64() >= 2.0 {
-                if let Err(e) = output::write_both(self.output, &film.mean()) {
-                    eprintln!("warning: could not save the current estimate: {e:#}");
-                }
-                *last = Instant::now();
+            if let Err(e) = output::write_both(self.output, &film.mean()) {
+                eprintln!("warning: could not save the current estimate: {e:#}");
             }
         };
         let options = RenderOptions {
@@ -263,8 +259,8 @@ fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
             .take()
             .unwrap_or_else(|| "unknown place".into());
         anyhow!(
-            "the render stopped: code panicked at {what}. The last saved estimate (if the \
-             render ran long enough to save one) is kept."
+            "the render stopped: code panicked at {what}. The image of the last complete \
+             pass (if one completed) is kept."
         )
     })
 }

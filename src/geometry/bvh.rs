@@ -9,8 +9,9 @@ use obvhs::aabb::Aabb;
 use obvhs::cwbvh::CwBvh;
 use std::time::Duration;
 
-/// A CWBVH over primitives given by their bounding boxes, and the permutation that puts
-/// primitives in traversal order: leaf entry `i` is input primitive `order[i]`.
+/// A CWBVH over primitives given by their bounding boxes. Its leaves refer to primitives by
+/// traversal slot: slot `i` holds input primitive [`Bvh::order`]`()[i]`, so callers store
+/// their primitives in that order.
 pub struct Bvh {
     /// The hierarchy.
     pub cwbvh: CwBvh,

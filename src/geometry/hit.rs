@@ -48,11 +48,14 @@ impl Hit {
         if dist.is_nan() || dist <= self.epsilon {
             return (Ray::new(self.p, self.n), 0.0);
         }
-        let dir = d / dist;
-        let origin = self.offset_origin(dir);
+        let origin = self.offset_origin(d / dist);
+        // The direction is taken from the offset origin: a ray parallel to `q − p` but
+        // shifted off the surface would pass beside `q`, and near grazing it would enter
+        // the light's own surface before reaching `q`.
+        let to_q = q - origin;
+        let length = to_q.length();
         let q_eps = 1e-4 * (1.0 + q.abs().max_element());
-        let t_max = ((q - origin).length() - q_eps).max(0.0);
-        (Ray::new(origin, dir), t_max)
+        (Ray::new(origin, to_q / length), (length - q_eps).max(0.0))
     }
 
     fn offset_origin(&self, dir: Vec3) -> Vec3 {

@@ -24,11 +24,12 @@ impl HenyeyGreenstein {
     /// Samples `wi` exactly proportionally to the phase function; the weight is 1.
     pub fn sample(&self, wo: Vec3, u: Vec2) -> Vec3 {
         let g = self.g;
+        // Inverse of the cumulative distribution of cos θ (θ the deflection angle).
         let cos = if g.abs() < 1e-3 {
             1.0 - 2.0 * u.x
         } else {
-            let s = (1.0 - g * g) / (1.0 + g - 2.0 * g * u.x);
-            -(1.0 + g * g - s * s) / (2.0 * g)
+            let s = (1.0 - g * g) / (1.0 - g + 2.0 * g * u.x);
+            (1.0 + g * g - s * s) / (2.0 * g)
         }
         .clamp(-1.0, 1.0);
         let sin = (1.0 - cos * cos).max(0.0).sqrt();

@@ -180,7 +180,14 @@ impl Builder<'_> {
 
         let mut parts = Parts::default();
         for shape in &spec.shapes {
-            self.shape(shape, &spec, &material_index, &mut materials, &mut parts)?;
+            self.shape(
+                shape,
+                &spec,
+                &material_index,
+                &mut materials,
+                &mut parts,
+                camera.eye,
+            )?;
         }
         let mut environment_seen = false;
         for light in &spec.lights {
@@ -576,6 +583,7 @@ impl Builder<'_> {
         material_index: &BTreeMap<&str, u32>,
         materials: &mut Vec<Material>,
         parts: &mut Parts,
+        eye: Vec3,
     ) -> Result<(), SceneError> {
         let at = spanned.referenced;
         let surface = spanned.value.surface();
@@ -804,6 +812,17 @@ impl Builder<'_> {
             }
         }
 
+        let eye_inside = match &spanned.value {
+            ShapeSpec::Sphere { center, radius, .. } => (eye - center.0).length() < radius.0,
+            ShapeSpec::Box { min, max, .. } => eye.cmpgt(min.0).all() && eye.cmplt(max.0).all(),
+            _ => false,
+        };
+        if medium_spec.is_some() && eye_inside {
+            return Err(self.error(
+                &at,
+                "the camera is inside this medium: media must not contain the camera",
+            ));
+        }
         let medium = match medium_spec {
             Some(m) => {
                 parts.media.push(self.medium(m, bounds)?);
