@@ -81,16 +81,7 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
     if args.implementation == ImplChoice::Student {
         // Fail before the (long) reference render rather than at the first estimate.
         let scene = Scene::load(path, &base).map_err(|e| anyhow!("{e}"))?;
-        let missing = super::render::missing_student_tasks(&scene);
-        if !missing.is_empty() {
-            let names: Vec<&str> = missing.iter().map(|t| t.name()).collect();
-            bail!(
-                "{} needs tasks you have not implemented yet: {}. Use `--impl mixed` to take \
-                 the reference for those.",
-                path.display(),
-                names.join(", ")
-            );
-        }
+        super::render::require_student_tasks(&scene, path)?;
     }
     let spp = args.reference_spp.unwrap_or(max_spp.saturating_mul(16));
     if let Some(file) = &args.reference {

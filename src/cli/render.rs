@@ -58,13 +58,33 @@ fn scene_path(given: Option<&Path>) -> PathBuf {
     }
 }
 
-/// The tasks `scene` runs whose student code cannot render, in worksheet order, each with
-/// why: not attempted, panicking, or not returning.
-pub fn unusable_student_tasks(scene: &Scene) -> Vec<(TaskId, Attempt)> {
-    probe_student(scene.needs().all_tasks())
+/// Refuses, naming each task and why (not implemented, panicking, or not returning), when
+/// the scene at `path` needs student code that cannot run yet.
+pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
+    let unusable: Vec<String> = probe_student(scene.needs().all_tasks())
         .into_iter()
-        .filter(|(_, a)| *a != Attempt::Written)
-        .collect()
+        .filter_map(|(t, attempt)| {
+            let why = match attempt {
+                Attempt::Written => return None,
+                Attempt::NotAttempted => "not implemented yet".to_string(),
+                Attempt::Panics(m) => format!("panics: {m}"),
+                Attempt::Hangs => format!(
+                    "did not return within {} s (an infinite loop?)",
+                    PROBE_TIMEOUT.as_secs()
+                ),
+            };
+            Some(format!("{t} (exercises/{t}.rs): {why}"))
+        })
+        .collect();
+    if !unusable.is_empty() {
+        bail!(
+            "{} needs tasks your code cannot run yet:\n  {}\nUse `--impl mixed` to take the \
+             reference for those.",
+            path.display(),
+            unusable.join("\n  ")
+        );
+    }
+    Ok(())
 }
 
 /// Renders a scene from the command line.
@@ -105,30 +125,7 @@ pub fn run(args: Args) -> Result<()> {
     };
     let out = match choice {
         ImplChoice::Student => {
-            let unusable = unusable_student_tasks(&scene);
-            if !unusable.is_empty() {
-                let list: Vec<String> = unusable
-                    .iter()
-                    .map(|(t, why)| {
-                        let why = match why {
-                            Attempt::NotAttempted => "not implemented yet".to_string(),
-                            Attempt::Panics(m) => format!("panics: {m}"),
-                            Attempt::Hangs => format!(
-                                "did not return within {} s (an infinite loop?)",
-                                PROBE_TIMEOUT.as_secs()
-                            ),
-                            Attempt::Written => unreachable!("filtered out above"),
-                        };
-                        format!("{t} (exercises/{t}.rs): {why}")
-                    })
-                    .collect();
-                bail!(
-                    "{} needs tasks your code cannot run yet:\n  {}\nRender with `--impl mixed` \
-                     to use the reference for those.",
-                    path.display(),
-                    list.join("\n  ")
-                );
-            }
+            require_student_tasks(&scene, &path)?;
             pool.install(|| job.run(&Student))?
         }
         #[cfg(feature = "solutions")]
