@@ -15,6 +15,7 @@
 //!   volumetric path tracer built on `delta_tracking`) and [`render`] (tiles, threads,
 //!   film, image files).
 //! - [`grade`]: the grader.
+//! - [`handout`]: the student repository without the solutions.
 //!
 //! [`Tasks`]: worksheet::Tasks
 
@@ -23,6 +24,7 @@ pub mod cli;
 pub mod converge;
 pub mod geometry;
 pub mod grade;
+pub mod handout;
 pub mod implementation;
 pub mod integrator;
 pub mod light;

@@ -9,22 +9,26 @@ mod stability_support;
 use glam::Vec3;
 use indicatif::ProgressBar;
 use pbrlab::converge::builtin::{builtin, irradiance};
-use pbrlab::converge::{Strategy, StudyConfig, StudyResult, Summary, run_study, summarise};
+use pbrlab::converge::{Strategy, StudyConfig, StudyResult, run_study};
+#[cfg(feature = "solutions")]
+use pbrlab::converge::{Summary, summarise};
 use pbrlab::implementation::Student;
 use pbrlab::sampling::Sampler;
 use std::sync::Arc;
 
 /// Cosine-weighted sampling whose pdf is 5 % too large: every estimate is 5 % low.
+#[cfg(feature = "solutions")]
 struct BiasedCosine {
     skies: Arc<Vec<irradiance::Sky>>,
 }
 
+#[cfg(feature = "solutions")]
 impl Strategy for BiasedCosine {
     fn name(&self) -> &str {
         "cosine_pdf_5pc_high"
     }
 
-    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Vec<f32>> {
+    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<pbrlab::converge::Estimate> {
         Ok(self
             .skies
             .iter()
@@ -42,7 +46,8 @@ impl Strategy for BiasedCosine {
                     .sum();
                 sum / spp as f32
             })
-            .collect())
+            .collect::<Vec<f32>>()
+            .into())
     }
 }
 
@@ -52,6 +57,7 @@ const CONFIG: StudyConfig = StudyConfig {
     seed: 11,
 };
 
+#[cfg(feature = "solutions")]
 fn summary<'a>(summaries: &'a [Summary], name: &str) -> &'a Summary {
     summaries.iter().find(|s| s.strategy == name).unwrap()
 }
@@ -75,7 +81,7 @@ fn unbiased_strategies_fall_like_one_over_spp_and_a_biased_one_flattens() {
     .unwrap();
     assert!(result.failures.is_empty(), "{:?}", result.failures);
     assert_eq!(result.points.len(), 3 * 11);
-    let summaries = summarise(&result.points);
+    let summaries = summarise(&result.points, study.reference_floor);
 
     for name in ["uniform", "cosine"] {
         let s = summary(&summaries, name);
@@ -152,7 +158,7 @@ fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
     )
     .unwrap();
     assert!(result.failures.is_empty(), "{:?}", result.failures);
-    summarise(&result.points)
+    summarise(&result.points, study.reference_floor)
 }
 
 #[cfg(feature = "solutions")]
@@ -183,5 +189,112 @@ fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_
             s.strategy,
             s.slope_spp
         );
+    }
+}
+
+/// A scene file of the repository.
+#[cfg(feature = "solutions")]
+fn scene_file(name: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+#[cfg(feature = "solutions")]
+#[test]
+fn scene_variants_follow_what_the_scene_contains() {
+    use pbrlab::converge::scene_study::variants;
+    use pbrlab::scene::{LoadOptions, Scene};
+    let names = |file: &str| {
+        let scene = Scene::load(&scene_file(file), &LoadOptions::default()).unwrap();
+        variants(&scene, &LoadOptions::default())
+            .into_iter()
+            .map(|v| v.name)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(
+        names("cornell.yaml"),
+        [
+            "mis_power",
+            "mis_balance",
+            "bsdf",
+            "light",
+            "mis_power_uniform_diffuse"
+        ]
+    );
+    assert_eq!(
+        names("smoke.yaml"),
+        ["ratio_tracking", "delta_tracking", "analytic"]
+    );
+}
+
+#[cfg(feature = "solutions")]
+#[test]
+fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
+    use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
+    use pbrlab::implementation::Reference;
+    use pbrlab::scene::LoadOptions;
+    use stability_support::{Flaw, Flawed};
+
+    let out = tempfile::tempdir().unwrap();
+    let base = LoadOptions {
+        width: Some(16),
+        height: Some(16),
+        ..LoadOptions::default()
+    };
+    let furnace = scene_file("furnace.yaml");
+    let source = || ReferenceSource::Render {
+        tasks: Reference,
+        label: "reference",
+        spp: 256,
+    };
+    let study = scene_study(&furnace, Reference, &base, source(), out.path()).unwrap();
+    assert!(
+        study.reference_note.contains("rendered"),
+        "{}",
+        study.reference_note
+    );
+    assert_eq!(study.reference.len(), 16 * 16 * 3);
+    assert!(out.path().join("reference.exr").is_file());
+    let config = StudyConfig {
+        max_spp: 16,
+        ..CONFIG
+    };
+    let run = |study: &pbrlab::converge::Study| {
+        let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
+        run_study(
+            &strategies,
+            &study.reference,
+            &config,
+            &ProgressBar::hidden(),
+        )
+        .unwrap()
+    };
+    let result = run(&study);
+    assert!(result.failures.is_empty(), "{:?}", result.failures);
+    assert_eq!(result.points.len(), 5 * 5);
+    for s in summarise(&result.points, study.reference_floor) {
+        assert!(!s.flattening(), "{}: {:?}", s.strategy, s.slope_spp);
+        assert_eq!(s.non_finite, 0);
+    }
+
+    // The same scene with a mis that handles area lights only (it drops the environment's
+    // light samples and ignores the heuristic): the reference comes from the cache, and
+    // every strategy flattens.
+    let study = scene_study(
+        &furnace,
+        Flawed(Flaw::MisUnguarded),
+        &base,
+        source(),
+        out.path(),
+    )
+    .unwrap();
+    assert!(
+        study.reference_note.contains("cached"),
+        "{}",
+        study.reference_note
+    );
+    for s in summarise(&run(&study).points, study.reference_floor) {
+        assert!(s.flattening(), "{}: {:?}", s.strategy, s.slope_spp);
     }
 }

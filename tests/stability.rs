@@ -6,12 +6,16 @@
 mod stability_support;
 
 use pbrlab::implementation::Student;
-use pbrlab::stability::{Case, Outcome, Verdict, cases, cases_for, run_cases};
-use pbrlab::worksheet::{TaskId, Tasks};
-#[cfg(feature = "solutions")]
-use stability_support::{Flaw, Flawed};
-use std::collections::BTreeMap;
+use pbrlab::stability::{Case, Outcome, Verdict, cases, run_cases};
+use pbrlab::worksheet::Tasks;
 use std::time::Duration;
+#[cfg(feature = "solutions")]
+use {
+    pbrlab::stability::cases_for,
+    pbrlab::worksheet::TaskId,
+    stability_support::{Flaw, Flawed},
+    std::collections::BTreeMap,
+};
 
 /// Far longer than any case takes; only the hang test uses a short limit.
 const TIMEOUT: Duration = Duration::from_secs(20);

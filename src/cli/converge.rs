@@ -1,20 +1,23 @@
 //! `pbrlab converge`: error against run time for every strategy a study supports.
 
-use crate::converge::builtin::builtin;
+use crate::converge::builtin::{BUILTIN, builtin};
 use crate::converge::csv::write_csv;
 use crate::converge::plot::plot_error_vs_time;
-use crate::converge::{Strategy, StudyConfig, Summary, run_study, summarise};
+use crate::converge::scene_study::{ReferenceSource, scene_study};
+use crate::converge::study::FLOOR_MARGIN;
+use crate::converge::{Strategy, Study, StudyConfig, Summary, run_study, summarise};
 use crate::implementation::{ImplChoice, Student};
+use crate::scene::{LoadOptions, Scene};
 use crate::stability::value::format_number;
 use crate::worksheet::Tasks;
-use anyhow::{Context, bail};
+use anyhow::{Context, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `pbrlab converge`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// What to estimate: a built-in study (`irradiance`, `microfacet_albedo`).
+    /// A scene file, or a built-in study (`irradiance`, `microfacet_albedo`).
     pub scene: String,
     /// Whose code the strategies run.
     #[arg(long = "impl", value_enum, default_value = "student")]
@@ -22,15 +25,96 @@ pub struct Args {
     /// Folder for converge.csv, converge.png and converge.svg (created if missing).
     #[arg(long, default_value = "converge-out")]
     pub out: PathBuf,
-    /// Largest samples per pixel; the levels double from --min-spp up to it.
-    #[arg(long, default_value_t = 1024)]
-    pub max_spp: u32,
+    /// Largest samples per pixel; the levels double from --min-spp up to it (default: 32
+    /// for a scene, 1024 for a built-in study).
+    #[arg(long)]
+    pub max_spp: Option<u32>,
     /// Samples per pixel of the first level.
     #[arg(long, default_value_t = 1)]
     pub min_spp: u32,
     /// Seed of the first level.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Scene only: image width (overrides the scene's; smaller is faster).
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Scene only: image height (overrides the scene's).
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Scene only: the reference image (linear EXR of the scene's size) instead of
+    /// rendering one.
+    #[arg(long)]
+    pub reference: Option<PathBuf>,
+    /// Scene only: samples per pixel of the rendered reference (default: 16 × --max-spp).
+    #[arg(long)]
+    pub reference_spp: Option<u32>,
+}
+
+/// True when `scene` names a built-in study rather than a file.
+fn is_builtin(scene: &str) -> bool {
+    BUILTIN.iter().any(|(name, _)| *name == scene)
+}
+
+/// Builds the study: a built-in one, or the scene file's with its reference.
+fn load_study<T: Tasks + Clone + Send + 'static>(
+    tasks: T,
+    args: &Args,
+    max_spp: u32,
+) -> anyhow::Result<Study> {
+    if is_builtin(&args.scene) {
+        return builtin(&args.scene, tasks);
+    }
+    let path = Path::new(&args.scene);
+    if !path.is_file() {
+        return builtin(&args.scene, tasks).with_context(|| {
+            format!(
+                "`{}` is neither a scene file nor a built-in study",
+                args.scene
+            )
+        });
+    }
+    let base = LoadOptions {
+        width: args.width,
+        height: args.height,
+        ..LoadOptions::default()
+    };
+    if args.implementation == ImplChoice::Student {
+        // Fail before the (long) reference render rather than at the first estimate.
+        let scene = Scene::load(path, &base).map_err(|e| anyhow!("{e}"))?;
+        let missing = super::render::missing_student_tasks(&scene);
+        if !missing.is_empty() {
+            let names: Vec<&str> = missing.iter().map(|t| t.name()).collect();
+            bail!(
+                "{} needs tasks you have not implemented yet: {}. Use `--impl mixed` to take \
+                 the reference for those.",
+                path.display(),
+                names.join(", ")
+            );
+        }
+    }
+    let spp = args.reference_spp.unwrap_or(max_spp.saturating_mul(16));
+    if let Some(file) = &args.reference {
+        return scene_study::<T, T>(path, tasks, &base, ReferenceSource::File(file), &args.out);
+    }
+    #[cfg(feature = "solutions")]
+    let source = ReferenceSource::Render {
+        tasks: crate::implementation::Reference,
+        label: "reference",
+        spp,
+    };
+    #[cfg(not(feature = "solutions"))]
+    let source = {
+        eprintln!(
+            "warning: no reference solutions in this build: the reference is rendered with \
+             your own code, so a bias in it cannot show (pass --reference FILE.exr)"
+        );
+        ReferenceSource::Render {
+            tasks: tasks.clone(),
+            label: "student",
+            spp,
+        }
+    };
+    scene_study(path, tasks, &base, source, &args.out)
 }
 
 /// Runs the study, writes the CSV and the plot, and prints the slope table.
@@ -41,7 +125,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ImplChoice::Reference => run_with(crate::implementation::Reference, &args),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let imp = crate::implementation::Mixed::new(crate::implementation::student_attempted());
+            let imp = crate::implementation::Mixed::new(crate::implementation::student_written());
             run_with(imp, &args)
         }
         #[cfg(not(feature = "solutions"))]
@@ -52,19 +136,34 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 }
 
 fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow::Result<()> {
-    if args.min_spp == 0 || args.max_spp < args.min_spp {
+    let max_spp = args
+        .max_spp
+        .unwrap_or(if is_builtin(&args.scene) { 1024 } else { 32 });
+    if args.min_spp == 0 || max_spp < args.min_spp {
         bail!(
-            "need 1 ≤ --min-spp ≤ --max-spp (got {} and {})",
-            args.min_spp,
-            args.max_spp
+            "need 1 ≤ --min-spp ≤ --max-spp (got {} and {max_spp})",
+            args.min_spp
         );
     }
-    let study = builtin(&args.scene, tasks)?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
+    // Path tracing recurses once per bounce: give the threads the renderer's deep stacks.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .stack_size(64 << 20)
+        .build()
+        .context("cannot start the worker threads")?;
+    pool.install(|| study_with(tasks, args, max_spp))
+}
+
+fn study_with<T: Tasks + Clone + Send + 'static>(
+    tasks: T,
+    args: &Args,
+    max_spp: u32,
+) -> anyhow::Result<()> {
+    let study = load_study(tasks, args, max_spp)?;
     let config = StudyConfig {
         min_spp: args.min_spp,
-        max_spp: args.max_spp,
+        max_spp,
         seed: args.seed,
     };
     let progress = ProgressBar::new(0).with_style(
@@ -78,6 +177,13 @@ fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow:
     let csv = args.out.join("converge.csv");
     write_csv(&csv, &result.points)?;
     println!("{} (reference: {})", study.title, study.reference_note);
+    if study.reference_floor > 0.0 {
+        println!(
+            "the reference's own noise adds about {} to every relMSE; levels within {FLOOR_MARGIN}× \
+             of that are left out of the slopes",
+            format_number(study.reference_floor)
+        );
+    }
     println!("wrote {}", csv.display());
     let (png, svg) = (args.out.join("converge.png"), args.out.join("converge.svg"));
     match plot_error_vs_time(&result.points, &study.title, &png, &svg) {
@@ -85,7 +191,7 @@ fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow:
         Err(e) => eprintln!("warning: no plot: {e:#}"),
     }
 
-    print_table(&summarise(&result.points));
+    print_table(&summarise(&result.points, study.reference_floor));
     for f in &result.failures {
         eprintln!(
             "strategy {} failed at {} spp: {}",
@@ -107,22 +213,29 @@ fn print_table(summaries: &[Summary]) {
         .filter(|e| e.is_finite())
         .fold(0.0, f64::max);
     println!(
-        "\n{:<22} {:>12} {:>16} {:>15} {:>12} {:>9}  note",
+        "\n{:<26} {:>12} {:>16} {:>15} {:>12} {:>9}  note",
         "strategy", "final relMSE", "slope vs time", "slope vs spp", "efficiency", "relative"
     );
     for s in summaries {
         let slope = |f: Option<crate::converge::fit::Fit>| {
             f.map_or("—".into(), |f| format!("{:.2} (r²={:.2})", f.slope, f.r2))
         };
+        let fitted = s.slope_spp.map_or(0, |f| f.points);
         let note = if s.non_finite > 0 {
-            format!("{} NaN/inf values", s.non_finite)
+            format!("{} NaN/inf values or dropped samples", s.non_finite)
+        } else if fitted < 3 && s.at_floor > 0 {
+            "at the reference's noise: raise --reference-spp".into()
+        } else if fitted < 3 {
+            "too few levels to judge: raise --max-spp".into()
         } else if s.flattening() {
             "flattening: biased?".into()
+        } else if s.slope_spp.is_some_and(|f| f.r2 < 0.7) {
+            "noisy (heavy-tailed samples?): raise --max-spp".into()
         } else {
             "≈ −1: unbiased".into()
         };
         println!(
-            "{:<22} {:>12} {:>16} {:>15} {:>12} {:>9}  {note}",
+            "{:<26} {:>12} {:>16} {:>15} {:>12} {:>9}  {note}",
             s.strategy,
             format_number(s.final_rel_mse),
             slope(s.slope_time),

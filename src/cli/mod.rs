@@ -1,11 +1,15 @@
 //! The `pbrlab` command line: one file per subcommand.
 
 mod converge;
+mod grade;
+mod grade_worker;
+mod handout;
 mod hint;
 mod needs;
 pub mod render;
 mod stability;
 mod tasks;
+mod watch;
 
 use clap::{Parser, Subcommand};
 
@@ -25,6 +29,15 @@ pub enum Command {
     Tasks(tasks::Args),
     /// Show the hints of a task, one level at a time.
     Hint(hint::Args),
+    /// Grade your tasks (or the reference) and print a report.
+    Grade(grade::Args),
+    /// Grade one task in an isolated process (used by `grade`; reads its job on stdin).
+    #[command(hide = true)]
+    GradeWorker(grade_worker::Args),
+    /// Regrade every time you save a file in exercises/.
+    Watch(watch::Args),
+    /// Write the student repository (no solutions) into a directory.
+    Handout(handout::Args),
     /// Render a scene to EXR and PNG.
     Render(render::Args),
     /// Show the tasks and subsystems a scene needs.
@@ -40,6 +53,10 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
+        Some(Command::Grade(args)) => grade::run(args),
+        Some(Command::GradeWorker(args)) => grade_worker::run(args),
+        Some(Command::Watch(args)) => watch::run(args),
+        Some(Command::Handout(args)) => handout::run(args),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Needs(args)) => needs::run(args),
         Some(Command::Stability(args)) => stability::run(args),

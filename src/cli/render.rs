@@ -1,4 +1,4 @@
-use crate::implementation::{ImplChoice, Student, student_has_attempted};
+use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, Student, probe_student};
 use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
@@ -58,13 +58,21 @@ fn scene_path(given: Option<&Path>) -> PathBuf {
     }
 }
 
-/// The tasks `scene` runs that the student has not written, in worksheet order.
+/// The tasks `scene` runs whose student code cannot render, in worksheet order, each with
+/// why: not attempted, panicking, or not returning.
+pub fn unusable_student_tasks(scene: &Scene) -> Vec<(TaskId, Attempt)> {
+    probe_student(scene.needs().all_tasks())
+        .into_iter()
+        .filter(|(_, a)| *a != Attempt::Written)
+        .collect()
+}
+
+/// The tasks of [`unusable_student_tasks`] without the reasons (for callers that only list
+/// them, such as `pbrlab converge`).
 pub fn missing_student_tasks(scene: &Scene) -> Vec<TaskId> {
-    scene
-        .needs()
-        .all_tasks()
-        .iter()
-        .filter(|t| !student_has_attempted(*t))
+    unusable_student_tasks(scene)
+        .into_iter()
+        .map(|(task, _)| task)
         .collect()
 }
 
@@ -106,17 +114,28 @@ pub fn run(args: Args) -> Result<()> {
     };
     let out = match choice {
         ImplChoice::Student => {
-            let missing = missing_student_tasks(&scene);
-            if !missing.is_empty() {
-                let list: Vec<String> = missing
+            let unusable = unusable_student_tasks(&scene);
+            if !unusable.is_empty() {
+                let list: Vec<String> = unusable
                     .iter()
-                    .map(|t| format!("{t} (exercises/{t}.rs)"))
+                    .map(|(t, why)| {
+                        let why = match why {
+                            Attempt::NotAttempted => "not implemented yet".to_string(),
+                            Attempt::Panics(m) => format!("panics: {m}"),
+                            Attempt::Hangs => format!(
+                                "did not return within {} s (an infinite loop?)",
+                                PROBE_TIMEOUT.as_secs()
+                            ),
+                            Attempt::Written => unreachable!("filtered out above"),
+                        };
+                        format!("{t} (exercises/{t}.rs): {why}")
+                    })
                     .collect();
                 bail!(
-                    "{} needs tasks you have not implemented yet: {}. Render with `--impl mixed` \
+                    "{} needs tasks your code cannot run yet:\n  {}\nRender with `--impl mixed` \
                      to use the reference for those.",
                     path.display(),
-                    list.join(", ")
+                    list.join("\n  ")
                 );
             }
             pool.install(|| job.run(&Student))?
@@ -125,7 +144,7 @@ pub fn run(args: Args) -> Result<()> {
         ImplChoice::Reference => pool.install(|| job.run(&crate::implementation::Reference))?,
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let mine = crate::implementation::student_attempted();
+            let mine = crate::implementation::student_written();
             let used: Vec<&str> = scene
                 .needs()
                 .all_tasks()

@@ -58,7 +58,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let student = attempted_within(timeout);
+            let student = crate::implementation::student_attempted();
             let reference: Vec<TaskId> = tasks
                 .iter()
                 .copied()
@@ -81,22 +81,6 @@ fn selected_tasks(names: &[String]) -> anyhow::Result<Vec<TaskId>> {
     names
         .iter()
         .map(|n| TaskId::parse(n).map_err(|e| anyhow!(e)))
-        .collect()
-}
-
-/// The tasks the student has attempted, probing each on a worker thread so that code
-/// which never returns counts as attempted (its cases will then report the hang).
-#[cfg(feature = "solutions")]
-fn attempted_within(timeout: Duration) -> crate::task_set::TaskSet {
-    TaskId::ALL
-        .into_iter()
-        .filter(|&task| {
-            let (tx, rx) = std::sync::mpsc::channel();
-            std::thread::spawn(move || {
-                let _ = tx.send(crate::implementation::student_has_attempted(task));
-            });
-            rx.recv_timeout(timeout).unwrap_or(true)
-        })
         .collect()
 }
 

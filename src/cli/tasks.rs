@@ -1,27 +1,71 @@
+use crate::grade::history;
+use crate::grade::verdict::{GradeReport, TaskStatus};
 use crate::implementation::student_has_attempted;
-use crate::worksheet::TaskId;
+use crate::worksheet::{TaskId, task_functions};
 
 /// Arguments of `pbrlab tasks`.
 #[derive(clap::Args, Debug, Default)]
 pub struct Args {}
 
-/// Prints the task table with the student's status for each task.
+/// The status column of a task: the last grade's verdict when there is one (older than the
+/// code, maybe: the table says when it was graded), otherwise whether the stub is replaced.
+fn status(task: TaskId, last: Option<&GradeReport>) -> String {
+    match last.and_then(|r| r.task(task.name())) {
+        Some(t) if t.max_points > 0.0 => {
+            let stale = if changed_since_grade(task) {
+                ", edited since"
+            } else {
+                ""
+            };
+            format!(
+                "{} ({:.1}/{}{stale})",
+                t.status.label(),
+                t.points,
+                t.max_points
+            )
+        }
+        Some(t) if t.status == TaskStatus::NoChecks => t.status.label(),
+        _ if task_functions(task).is_empty() => "arrives with the renderer".into(),
+        _ if student_has_attempted(task) => "implemented, not graded yet".into(),
+        _ => "not attempted".into(),
+    }
+}
+
+/// True when `exercises/<task>.rs` is newer than the last grade.
+fn changed_since_grade(task: TaskId) -> bool {
+    let modified = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("exercises")
+        .join(format!("{}.rs", task.name()));
+    matches!((modified(&file), modified(&history::last_grade_path())), (Some(f), Some(g)) if f > g)
+}
+
+/// Prints the task table with the student's progress: the last `pbrlab grade` where there
+/// is one, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
+    let last = history::load().filter(|r| r.implementation != "reference");
     println!("{:<16} {:<62} {:>6}  status", "task", "title", "points");
     let mut total = 0;
     for task in TaskId::ALL {
         let info = task.info();
         total += info.points;
-        let status = if student_has_attempted(task) {
-            "implemented"
-        } else {
-            "not attempted"
-        };
         println!(
-            "{:<16} {:<62} {:>6}  {status}",
-            info.id, info.title, info.points
+            "{:<16} {:<62} {:>6}  {}",
+            info.id,
+            info.title,
+            info.points,
+            status(task, last.as_ref())
         );
     }
     println!("{:<16} {:<62} {:>6}", "total", "", total);
+    match &last {
+        Some(r) => println!(
+            "\nLast grade: {:.1}/{} ({}). Run `pbrlab grade` again after changing your code.",
+            r.score,
+            r.max_score,
+            history::last_grade_path().display()
+        ),
+        None => println!("\nNot graded yet: run `pbrlab grade` (or `pbrlab watch`)."),
+    }
     Ok(())
 }

@@ -8,8 +8,10 @@
 //! `1 / (relMSE · time)`. The points go to a CSV ([`csv`]) and a log-log plot ([`plot`]).
 //!
 //! `pbrlab converge` runs a study from the command line; the grader can call
-//! [`run_study`] on an estimator task to get the same figures. [`builtin`] holds studies
-//! that need no scene (the irradiance estimator with the student's cosine sampling).
+//! [`run_study`] on an estimator task to get the same figures. [`scene_study`] studies a
+//! scene file (direct-light strategies, hemisphere sampling, transmittance estimators)
+//! against a cached high-sample reference ([`reference_cache`]); [`builtin`] holds
+//! studies that need no scene, with exact references.
 
 pub mod builtin;
 pub mod clock;
@@ -17,8 +19,10 @@ pub mod csv;
 pub mod fit;
 pub mod metrics;
 pub mod plot;
+pub mod reference_cache;
+pub mod scene_study;
 pub mod strategy;
 pub mod study;
 
-pub use strategy::Strategy;
-pub use study::{Failure, Point, StudyConfig, StudyResult, Summary, run_study, summarise};
+pub use strategy::{Estimate, Strategy};
+pub use study::{Failure, Point, Study, StudyConfig, StudyResult, Summary, run_study, summarise};

@@ -10,6 +10,25 @@ pub trait Strategy: Sync {
     fn name(&self) -> &str;
 
     /// Estimates every quantity with `spp` samples each, from random numbers chosen by
-    /// `seed`. Returns one value per pixel channel, in the same order as the reference.
-    fn estimate(&self, spp: u32, seed: u64) -> Result<Vec<f32>>;
+    /// `seed`.
+    fn estimate(&self, spp: u32, seed: u64) -> Result<Estimate>;
+}
+
+/// What a strategy produced at one sample count.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Estimate {
+    /// One value per pixel channel, in the same order as the reference.
+    pub values: Vec<f32>,
+    /// Samples the estimator dropped because they were NaN, infinite or negative (the
+    /// renderer's film refuses them); each is a bug upstream, and a source of bias.
+    pub dropped_samples: u64,
+}
+
+impl From<Vec<f32>> for Estimate {
+    fn from(values: Vec<f32>) -> Self {
+        Self {
+            values,
+            dropped_samples: 0,
+        }
+    }
 }

@@ -9,6 +9,22 @@ use indicatif::ProgressBar;
 use serde::Serialize;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
+/// A study ready to run: its strategies and the reference they are measured against.
+pub struct Study {
+    /// What is being estimated, for the plot's title.
+    pub title: String,
+    /// The competing strategies.
+    pub strategies: Vec<Box<dyn Strategy>>,
+    /// The reference values, one per pixel channel.
+    pub reference: Vec<f32>,
+    /// How the reference was obtained, for the report.
+    pub reference_note: String,
+    /// The relMSE the reference's own noise adds to every measurement (0 for an exact
+    /// reference). Measurements near it say more about the reference than the strategy:
+    /// [`summarise`] leaves them out of the fits.
+    pub reference_floor: f64,
+}
+
 /// The sample counts and seed of a study.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StudyConfig {
@@ -53,8 +69,9 @@ pub struct Point {
     pub rmse: f64,
     /// Inverse work-normalised error, `1 / (relMSE · wall seconds)`: higher is better.
     pub efficiency: f64,
-    /// Values of the estimate that were NaN or infinite.
-    pub non_finite: usize,
+    /// Values of the estimate that were NaN or infinite, plus samples the estimator
+    /// dropped as NaN, infinite or negative.
+    pub non_finite: u64,
 }
 
 /// A strategy that stopped: its estimate returned an error or panicked.
@@ -125,7 +142,7 @@ pub fn run_study(
                     continue;
                 }
             };
-            let error = image_error(&estimate, reference)
+            let error = image_error(&estimate.values, reference)
                 .with_context(|| format!("strategy {} at {spp} spp", s.name()))?;
             let wall_s = timing.wall.as_secs_f64();
             result.points.push(Point {
@@ -136,7 +153,7 @@ pub fn run_study(
                 rel_mse: error.rel_mse,
                 rmse: error.rmse,
                 efficiency: 1.0 / (error.rel_mse * wall_s),
-                non_finite: error.non_finite,
+                non_finite: error.non_finite as u64 + estimate.dropped_samples,
             });
             progress.inc(1);
         }
@@ -167,9 +184,16 @@ pub struct Summary {
     pub efficiency: f64,
     /// relMSE at the largest sample count.
     pub final_rel_mse: f64,
-    /// Non-finite values over all levels.
-    pub non_finite: usize,
+    /// Non-finite values and dropped samples over all levels.
+    pub non_finite: u64,
+    /// Levels left out of the fits because their relMSE is within
+    /// [`FLOOR_MARGIN`] × the reference's noise floor.
+    pub at_floor: usize,
 }
+
+/// Levels whose relMSE is below this multiple of the reference's noise floor are left out
+/// of the slope fits: there the reference's noise, not the strategy's, sets the error.
+pub const FLOOR_MARGIN: f64 = 3.0;
 
 /// A slope flatter than this over the upper levels is reported as flattening.
 pub const FLATTENING_SLOPE: f64 = -0.75;
@@ -190,8 +214,9 @@ pub fn upper_levels(points: &[&Point]) -> usize {
     n.div_ceil(2).max(3.min(n))
 }
 
-/// One [`Summary`] per strategy, in order of first appearance.
-pub fn summarise(points: &[Point]) -> Vec<Summary> {
+/// One [`Summary`] per strategy, in order of first appearance. `reference_floor` is the
+/// study's [`Study::reference_floor`].
+pub fn summarise(points: &[Point], reference_floor: f64) -> Vec<Summary> {
     let mut names: Vec<&str> = Vec::new();
     for p in points {
         if !names.contains(&p.strategy.as_str()) {
@@ -203,7 +228,12 @@ pub fn summarise(points: &[Point]) -> Vec<Summary> {
         .map(|name| {
             let mut mine: Vec<&Point> = points.iter().filter(|p| p.strategy == name).collect();
             mine.sort_by_key(|p| p.spp);
-            let upper = &mine[mine.len() - upper_levels(&mine)..];
+            let above: Vec<&Point> = mine
+                .iter()
+                .copied()
+                .filter(|p| p.rel_mse.is_nan() || p.rel_mse > FLOOR_MARGIN * reference_floor)
+                .collect();
+            let upper = &above[above.len() - upper_levels(&above)..];
             let col = |f: fn(&Point) -> f64| upper.iter().map(|p| f(p)).collect::<Vec<f64>>();
             let (time, spp, err) = (col(|p| p.wall_s), col(|p| p.spp as f64), col(|p| p.rel_mse));
             let mut eff = col(|p| p.efficiency);
@@ -215,6 +245,7 @@ pub fn summarise(points: &[Point]) -> Vec<Summary> {
                 efficiency: eff.get(eff.len() / 2).copied().unwrap_or(f64::NAN),
                 final_rel_mse: mine.last().map_or(f64::NAN, |p| p.rel_mse),
                 non_finite: mine.iter().map(|p| p.non_finite).sum(),
+                at_floor: mine.len() - above.len(),
             }
         })
         .collect()

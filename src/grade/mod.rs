@@ -1,3 +1,46 @@
 //! The grader: checks that score a [`crate::worksheet::Tasks`] implementation task by task.
+//!
+//! # Check kinds (one file each)
+//! - [`values`]: fixed and random cases against the reference's stored outputs, compared
+//!   with an absolute + relative [`tolerance`]; NaN never passes.
+//! - [`sampling`]: Pearson χ² of a student's direction sampler against the reference
+//!   density over cells of equal solid angle ([`stats`] holds the tests).
+//! - [`estimator`]: Student's t-test of an estimator against an analytic value.
+//! - [`image_check`]: per-pixel z-test of a render against the reference.
+//! - [`stability`]: extreme inputs must give finite values in range.
+//!
+//! # Data
+//! [`catalogue`] says which inputs each task is graded on; [`expected`] stores the
+//! reference's answers (insta snapshots embedded at build time), so the handout grades
+//! without solutions. [`checks`] runs a task's checks on any implementation.
+//!
+//! # Isolation
+//! [`runner`] grades each task in its own worker process ([`worker`] is the child side,
+//! [`isolation`] the parent side): a panic, an endless loop, a stack overflow, an abort, a
+//! runaway allocation or an early `exit` in student code costs that task and nothing else.
 
+pub mod calibration;
+pub mod call;
+pub mod case;
+pub mod catalogue;
+pub mod checks;
+pub mod estimator;
+pub mod expected;
+pub mod history;
+pub mod image_check;
+pub mod isolation;
+pub mod lenient_f64;
+pub mod output;
+pub mod panics;
 pub mod probe;
+pub mod report;
+pub mod runner;
+pub mod sampling;
+pub mod scene_gate;
+pub mod stability;
+pub mod stats;
+pub mod test_brdf;
+pub mod tolerance;
+pub mod values;
+pub mod verdict;
+pub mod worker;

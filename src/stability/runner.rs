@@ -19,6 +19,13 @@ use std::time::{Duration, Instant};
 /// about one).
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(2);
 
+/// Stack of each case's worker thread: as deep as the renderer's, so that a recursive
+/// path tracer that does terminate is not cut short (a thread's stack is reserved, not
+/// committed, so this costs address space only). Recursion without end still overflows
+/// it, which aborts the process: only a child process (the grader's isolation) survives
+/// that.
+const WORKER_STACK: usize = 64 << 20;
+
 /// The result of one case on one implementation.
 #[derive(Clone, Debug, Serialize)]
 pub struct Outcome {
@@ -73,6 +80,7 @@ where
     let worker_imp = imp.clone();
     let spawned = std::thread::Builder::new()
         .name(format!("stability {}", case.name))
+        .stack_size(WORKER_STACK)
         .spawn(move || {
             let start = Instant::now();
             let ended = match catch_unwind(AssertUnwindSafe(|| eval(&worker_imp))) {

@@ -5,7 +5,7 @@
 //! (non-negative), whose irradiance `E = ∫ L cos θ dω = π c0 + 2π/3 c3 + π/2 c4` is known
 //! exactly, so the reference is analytic.
 
-use crate::converge::Strategy;
+use crate::converge::{Estimate, Strategy};
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::Vec3;
@@ -84,11 +84,12 @@ impl Strategy for Uniform {
         "uniform"
     }
 
-    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Vec<f32>> {
+    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Estimate> {
         Ok(estimate_each(&self.skies, spp, seed, |sky, s| {
             let w = uniform_hemisphere(s.next_2d());
             sky.radiance(w) * w.z / uniform_hemisphere_pdf()
-        }))
+        })
+        .into())
     }
 }
 
@@ -107,7 +108,7 @@ impl<T: Tasks> Strategy for Cosine<T> {
         "cosine"
     }
 
-    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Vec<f32>> {
+    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Estimate> {
         Ok(estimate_each(&self.skies, spp, seed, |sky, s| {
             let w = self.tasks.cosine_sample(s.next_2d());
             let pdf = self.tasks.cosine_pdf(w);
@@ -116,7 +117,8 @@ impl<T: Tasks> Strategy for Cosine<T> {
             } else {
                 0.0
             }
-        }))
+        })
+        .into())
     }
 }
 

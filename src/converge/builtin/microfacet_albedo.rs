@@ -7,7 +7,7 @@
 //! `cook_torrance`, so a sampler or pdf that does not match shows up as bias, whatever
 //! the BRDF code does.
 
-use crate::converge::Strategy;
+use crate::converge::{Estimate, Strategy};
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::{Vec2, Vec3};
@@ -161,12 +161,13 @@ impl<T: Tasks> Strategy for Sampled<T> {
         }
     }
 
-    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Vec<f32>> {
+    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Estimate> {
         let t = &self.tasks;
         Ok(estimate_each(&self.configs, spp, seed, |c, s| {
             draw(t, c, self.technique, s.next_2d())
                 .map_or(0.0, |(wi, pdf)| ratio(integrand(t, c, wi), pdf))
-        }))
+        })
+        .into())
     }
 }
 
@@ -197,7 +198,7 @@ impl<T: Tasks> Strategy for Mis<T> {
         }
     }
 
-    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Vec<f32>> {
+    fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Estimate> {
         let t = &self.tasks;
         let weight = |a: f32, b: f32| match self.heuristic {
             Heuristic::Balance => ratio(a, a + b),
@@ -215,6 +216,7 @@ impl<T: Tasks> Strategy for Mis<T> {
                 total += weight(pdf, other) * ratio(integrand(t, c, wi), pdf);
             }
             total
-        }))
+        })
+        .into())
     }
 }

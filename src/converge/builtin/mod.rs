@@ -4,21 +4,9 @@
 pub mod irradiance;
 pub mod microfacet_albedo;
 
-use super::Strategy;
+use super::{Strategy, Study};
 use crate::worksheet::Tasks;
 use std::sync::Arc;
-
-/// A study ready to run: its strategies and the reference they are measured against.
-pub struct Study {
-    /// What is being estimated, for the plot's title.
-    pub title: String,
-    /// The competing strategies.
-    pub strategies: Vec<Box<dyn Strategy>>,
-    /// The exact values, one per pixel channel.
-    pub reference: Vec<f32>,
-    /// How the reference was obtained, for the report.
-    pub reference_note: String,
-}
 
 /// The built-in studies, by the name `pbrlab converge` takes in place of a scene file.
 pub const BUILTIN: &[(&str, &str)] = &[
@@ -44,6 +32,7 @@ pub fn builtin<T: Tasks + Clone + Send + 'static>(name: &str, tasks: T) -> anyho
                 title: "Irradiance: uniform vs cosine-weighted hemisphere sampling".into(),
                 reference: irradiance::reference(&skies),
                 reference_note: "analytic".into(),
+                reference_floor: 0.0,
                 strategies: vec![
                     Box::new(irradiance::Uniform {
                         skies: skies.clone(),
@@ -78,6 +67,7 @@ pub fn builtin<T: Tasks + Clone + Send + 'static>(name: &str, tasks: T) -> anyho
             Ok(Study {
                 title: "Cook-Torrance albedo: uniform, cosine, NDF sampling and MIS".into(),
                 reference,
+                reference_floor: 0.0,
                 reference_note: format!(
                     "midpoint quadrature, {n} × {n} nodes per pixel",
                     n = microfacet_albedo::QUADRATURE_NODES

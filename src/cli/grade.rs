@@ -1,0 +1,108 @@
+use crate::grade::calibration;
+use crate::grade::history;
+use crate::grade::isolation::Launcher;
+use crate::grade::report::{self, Format};
+use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
+use crate::implementation::ImplChoice;
+use crate::worksheet::TaskId;
+use anyhow::{Context, anyhow};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// Arguments of `pbrlab grade`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Tasks to grade (ids or unique prefixes). Default: every task.
+    pub tasks: Vec<String>,
+    /// Whose code to grade. `student` grades each task with only that task from
+    /// exercises/ and the reference behind it; `mixed` uses every task you have written.
+    #[arg(long = "impl", value_enum, default_value = "student")]
+    pub implementation: ImplChoice,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
+    /// Write the report to this file instead of the terminal.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Also write an HTML report (index.html) into this directory.
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Seed of the statistical checks.
+    #[arg(long, default_value_t = DEFAULT_SEED)]
+    pub seed: u64,
+    /// Add random hidden cases drawn with this seed, compared live against the reference.
+    #[arg(long)]
+    pub hidden_seed: Option<u64>,
+    /// Time limit per task, in seconds.
+    #[arg(long, default_value_t = 30.0)]
+    pub timeout: f64,
+    /// Memory limit per task, in MiB.
+    #[arg(long, default_value_t = 4096)]
+    pub memory_limit_mb: u64,
+    /// Tasks graded at once (default: the number of cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Grade this many times with seeds seed, seed+1, … and report each task's failure rate
+    /// against its declared false-failure rate (for `--impl reference`).
+    #[arg(long)]
+    pub repeat: Option<usize>,
+}
+
+/// Grades, prints or writes the report, and remembers the grade for `pbrlab tasks`.
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let tasks = if args.tasks.is_empty() {
+        TaskId::ALL.to_vec()
+    } else {
+        let mut tasks = args
+            .tasks
+            .iter()
+            .map(|t| TaskId::parse(t).map_err(|e| anyhow!(e)))
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        tasks.sort();
+        tasks.dedup();
+        tasks
+    };
+    if !(args.timeout > 0.0 && args.timeout.is_finite()) {
+        return Err(anyhow!("--timeout must be a positive number of seconds"));
+    }
+    let mut options = GradeOptions {
+        tasks,
+        implementation: args.implementation,
+        seed: args.seed,
+        hidden_seed: args.hidden_seed,
+        timeout: Duration::from_secs_f64(args.timeout),
+        memory_limit: args.memory_limit_mb << 20,
+        ..GradeOptions::default()
+    };
+    if let Some(jobs) = args.jobs {
+        options.jobs = jobs.max(1);
+    }
+    let launcher = Launcher::current_exe()?;
+    if let Some(runs) = args.repeat {
+        let calibration = calibration::repeat(&options, &launcher, runs)?;
+        return emit(&calibration.text(), args.output.as_ref());
+    }
+    let report = grade(&options, &launcher)?;
+    if let Some(dir) = &args.html {
+        let page = report::write_html(&report, dir)?;
+        eprintln!("HTML report: {}", page.display());
+    }
+    if args.implementation != ImplChoice::Reference && args.hidden_seed.is_none() {
+        // Losing the progress record must not lose the grade itself.
+        if let Err(e) = history::save(&report) {
+            eprintln!("warning: could not remember this grade: {e:#}");
+        }
+    }
+    emit(&report::render(&report, args.format)?, args.output.as_ref())
+}
+
+fn emit(text: &str, output: Option<&PathBuf>) -> anyhow::Result<()> {
+    match output {
+        Some(path) => history::write_atomic(path, text.as_bytes())
+            .with_context(|| format!("writing {}", path.display())),
+        None => {
+            print!("{text}");
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,39 @@
+use crate::handout;
+use crate::implementation::student_attempted;
+use crate::worksheet::task_functions;
+use anyhow::bail;
+use std::path::{Path, PathBuf};
+
+/// Arguments of `pbrlab handout`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Where to write the student repository (must not exist, or be empty).
+    pub dir: PathBuf,
+}
+
+/// Writes the student repository.
+pub fn run(args: Args) -> anyhow::Result<()> {
+    if !cfg!(feature = "solutions") {
+        bail!("this is already a handout: run `pbrlab handout` from the instructor repository");
+    }
+    // The exercises are copied as they are: they must still be the stubs.
+    let written: Vec<_> = student_attempted()
+        .iter()
+        .filter(|t| !task_functions(*t).is_empty())
+        .map(|t| format!("exercises/{t}.rs"))
+        .collect();
+    if !written.is_empty() {
+        bail!(
+            "these exercises are implemented and would be handed out as they are: {}",
+            written.join(", ")
+        );
+    }
+    let files = handout::write(Path::new(env!("CARGO_MANIFEST_DIR")), &args.dir)?;
+    println!(
+        "Wrote {} files to {}. Check it builds: cd {} && cargo test --release",
+        files.len(),
+        args.dir.display(),
+        args.dir.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,214 @@
+//! A value case: a call, the reference's output, and the rule that decides whether the
+//! student's output agrees.
+
+use super::call::Call;
+use super::output::{Output, fmt_num};
+use super::tolerance::{Error, Tolerance, error};
+use serde::{Deserialize, Serialize};
+
+/// One graded input of a task function with its expected output.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ValueCase {
+    /// Where the case comes from: `worksheet §1.3 glass→air 40°`, `random 7`, …
+    pub name: String,
+    /// The function and its inputs.
+    pub call: Call,
+    /// What decides agreement.
+    pub rule: Rule,
+    /// Shown with a failure of this case: the usual cause.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+    /// The reference's output (always finite).
+    pub expected: Output,
+}
+
+/// How a student's output is compared with the expected one.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "rule", rename_all = "snake_case")]
+pub enum Rule {
+    /// Every number within the tolerance, same shape (`None` only where expected).
+    Close(Tolerance),
+    /// A measured quantity only judged on which side of `threshold` it falls (for Monte
+    /// Carlo answers whose exact value depends on the random numbers a student draws).
+    SameSide {
+        /// The dividing value.
+        threshold: f64,
+    },
+    /// A [`crate::bsdf::PlausibilityReport`] judged by its three verdicts (positivity,
+    /// reciprocity, energy conservation), and by its albedo within `albedo` when the
+    /// BRDF's albedo is known.
+    Plausibility {
+        /// Relative tolerance on `max_albedo`, for BRDFs whose albedo is a constant.
+        albedo: Option<f64>,
+    },
+}
+
+/// Below this a report's `min_value` counts as negative.
+const NEGATIVE: f64 = -1e-6;
+/// Above this a report's reciprocity error counts as a violation.
+const ASYMMETRIC: f64 = 1e-3;
+/// Above this a report's albedo counts as gaining energy (Monte Carlo noise stays below).
+const GAINS_ENERGY: f64 = 1.05;
+
+impl ValueCase {
+    /// Judges `got`: `Ok` with the error when it agrees, `Err` with what is wrong.
+    pub fn judge(&self, got: &Output) -> Result<Error, String> {
+        match self.rule {
+            Rule::Close(tol) => match tol.compare(got, &self.expected) {
+                Ok(()) => Ok(error(got, &self.expected)),
+                Err(m) if m.path.is_empty() => {
+                    Err(format!("got {}, expected {}", m.got, m.expected))
+                }
+                Err(m) => Err(format!(
+                    "{}: got {}, expected {}",
+                    m.path, m.got, m.expected
+                )),
+            },
+            Rule::SameSide { threshold } => {
+                let (Some(g), Some(e)) = (got.as_number(), self.expected.as_number()) else {
+                    return Err(format!("got {got}, expected a number"));
+                };
+                let side = |x: f64| if x <= threshold { "≤" } else { ">" };
+                if !g.is_nan() && side(g) == side(e) {
+                    Ok(Error::default())
+                } else {
+                    Err(format!(
+                        "got {} ({} {}), expected a value {} {} (reference: {})",
+                        fmt_num(g),
+                        side(g),
+                        fmt_num(threshold),
+                        side(e),
+                        fmt_num(threshold),
+                        fmt_num(e)
+                    ))
+                }
+            }
+            Rule::Plausibility { albedo } => judge_plausibility(got, &self.expected, albedo),
+        }
+    }
+}
+
+/// One plausibility condition of a report field: which values satisfy it, and its name
+/// when it holds or fails.
+struct Condition {
+    field: &'static str,
+    holds: fn(f64) -> bool,
+    yes: &'static str,
+    no: &'static str,
+}
+
+const CONDITIONS: [Condition; 3] = [
+    Condition {
+        field: "min_value",
+        holds: |x| x >= NEGATIVE,
+        yes: "non-negative",
+        no: "negative somewhere",
+    },
+    Condition {
+        field: "max_reciprocity_error",
+        holds: |x| x <= ASYMMETRIC,
+        yes: "reciprocal",
+        no: "not reciprocal",
+    },
+    Condition {
+        field: "max_albedo",
+        holds: |x| x <= GAINS_ENERGY,
+        yes: "energy-conserving",
+        no: "not energy-conserving",
+    },
+];
+
+fn judge_plausibility(
+    got: &Output,
+    expected: &Output,
+    albedo: Option<f64>,
+) -> Result<Error, String> {
+    let field = |o: &Output, name: &str| o.field(name).and_then(Output::as_number);
+    let mut problems = Vec::new();
+    for c in &CONDITIONS {
+        let (Some(g), Some(e)) = (field(got, c.field), field(expected, c.field)) else {
+            return Err(format!("got {got}, expected a report like {expected}"));
+        };
+        let verdict = |ok: bool| if ok { c.yes } else { c.no };
+        if g.is_nan() {
+            problems.push(format!("{} is NaN", c.field));
+        } else if (c.holds)(g) != (c.holds)(e) {
+            problems.push(format!(
+                "{} = {} means {}, but the BRDF is {} (reference {} = {})",
+                c.field,
+                fmt_num(g),
+                verdict((c.holds)(g)),
+                verdict((c.holds)(e)),
+                c.field,
+                fmt_num(e)
+            ));
+        }
+    }
+    let (g, e) = (field(got, "max_albedo"), field(expected, "max_albedo"));
+    if let (Some(rel), Some(g), Some(e)) = (albedo, g, e)
+        && !Tolerance::new(0.0, rel).close(g, e)
+    {
+        problems.push(format!(
+            "max_albedo = {}, expected {} within {:.0} %",
+            fmt_num(g),
+            fmt_num(e),
+            rel * 100.0
+        ));
+    }
+    if problems.is_empty() {
+        Ok(Error::default())
+    } else {
+        Err(problems.join("; "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grade::output::IntoOutput;
+    use crate::grade::test_brdf::TestBrdf;
+
+    fn case(rule: Rule, expected: Output) -> ValueCase {
+        ValueCase {
+            name: "t".into(),
+            call: Call::ReciprocityGap {
+                brdf: TestBrdf::IncidentOnly,
+                seed: 0,
+                pairs: 1,
+            },
+            rule,
+            note: None,
+            expected,
+        }
+    }
+
+    #[test]
+    fn same_side_compares_verdicts_only() {
+        let c = case(Rule::SameSide { threshold: 1e-3 }, 0.4f32.into_output());
+        assert!(c.judge(&0.9f32.into_output()).is_ok());
+        assert!(c.judge(&0.0f32.into_output()).is_err());
+        assert!(c.judge(&f32::NAN.into_output()).is_err());
+    }
+
+    #[test]
+    fn plausibility_names_the_wrong_verdict() {
+        let report = |min, recip, albedo| crate::bsdf::PlausibilityReport {
+            min_value: min,
+            max_reciprocity_error: recip,
+            max_albedo: albedo,
+            worst_wi: glam::Vec3::Z,
+        };
+        let c = case(
+            Rule::Plausibility { albedo: Some(0.1) },
+            report(0.16, 0.0, 0.5).into_output(),
+        );
+        assert!(c.judge(&report(0.16, 0.0, 0.52).into_output()).is_ok());
+        let e = c.judge(&report(0.16, 0.3, 0.5).into_output()).unwrap_err();
+        assert!(
+            e.contains("means not reciprocal, but the BRDF is reciprocal"),
+            "{e}"
+        );
+        let e = c.judge(&report(0.16, 0.0, 0.8).into_output()).unwrap_err();
+        assert!(e.contains("max_albedo = 0.8"), "{e}");
+    }
+}

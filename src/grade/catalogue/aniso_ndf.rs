@@ -1,0 +1,73 @@
+//! Cases of `aniso_ndf`, and its normalisation as an estimator.
+
+use super::random::{roughness, upper};
+use super::{CaseInput, EstimatorSpec};
+use crate::grade::call::Call;
+use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
+use crate::worksheet::Tasks;
+use glam::Vec3;
+
+const D: &str = "D = 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²), αx along local x";
+
+fn ndf(name: &str, h: Vec3, alpha_x: f32, alpha_y: f32) -> CaseInput {
+    CaseInput::new(
+        name,
+        Call::AnisoNdf {
+            h,
+            alpha_x,
+            alpha_y,
+        },
+    )
+    .note(D)
+}
+
+pub fn fixed() -> Vec<CaseInput> {
+    let h = Vec3::new(0.5, 0.5, std::f32::consts::FRAC_1_SQRT_2);
+    let along_x = Vec3::new(0.6, 0.0, 0.8);
+    vec![
+        ndf("worksheet §4.1a", h, 0.5, 0.5),
+        ndf("worksheet §4.1b", h, 0.1, 1.0),
+        ndf("tilted along x, αx < αy", along_x, 0.2, 0.8),
+        ndf("tilted along x, αx > αy", along_x, 0.8, 0.2),
+        ndf(
+            "errata: α = 1 is 1/π everywhere",
+            Vec3::new(0.36, 0.48, 0.8),
+            1.0,
+            1.0,
+        ),
+        ndf("smooth, h = n", Vec3::Z, 0.05, 0.05),
+        CaseInput::new(
+            "errata: below the horizon",
+            Call::AnisoNdf {
+                h: Vec3::new(0.5, 0.5, -std::f32::consts::FRAC_1_SQRT_2),
+                alpha_x: 0.5,
+                alpha_y: 0.5,
+            },
+        )
+        .note("h below the surface has density 0"),
+    ]
+}
+
+pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    (0..count)
+        .map(|i| {
+            // Half near the normal, where D is large, half anywhere.
+            let h = upper(s, if i % 2 == 0 { 0.8 } else { 0.0 });
+            ndf("", h, roughness(s, 0.05, 1.0), roughness(s, 0.05, 1.0))
+        })
+        .collect()
+}
+
+pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
+    vec![EstimatorSpec {
+        name: "∫ D(h) cos θh dωh for αx = 0.25, αy = 0.5, uniform hemisphere sampling".into(),
+        analytic: 1.0,
+        samples: 200_000,
+        estimate: Box::new(move |s: &mut Sampler| {
+            Ok({
+                let h = uniform_hemisphere(s.next_2d());
+                (t.aniso_ndf(h, 0.25, 0.5) * h.z / uniform_hemisphere_pdf()) as f64
+            })
+        }),
+    }]
+}

@@ -1,0 +1,52 @@
+//! Cases of `beckmann_ndf`, and its normalisation as an estimator.
+
+use super::random::{roughness, upper};
+use super::{CaseInput, EstimatorSpec};
+use crate::grade::call::Call;
+use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
+use crate::worksheet::Tasks;
+use glam::Vec3;
+
+const D: &str = "D = exp(−tan²θh / α²) / (π α² cos⁴θh)";
+
+fn at_degrees(deg: f32) -> Vec3 {
+    let r = deg.to_radians();
+    Vec3::new(r.sin(), 0.0, r.cos())
+}
+
+fn ndf(name: &str, h: Vec3, alpha: f32) -> CaseInput {
+    CaseInput::new(name, Call::BeckmannNdf { h, alpha }).note(D)
+}
+
+pub fn fixed() -> Vec<CaseInput> {
+    vec![
+        ndf("worksheet §3.4.3: h = n, α = 0.1", Vec3::Z, 0.1),
+        ndf("errata §3.4.3: θh = 30°, α = 0.1", at_degrees(30.0), 0.1),
+        ndf("θh = 30°, α = 0.5", at_degrees(30.0), 0.5),
+        ndf("errata: grazing h", Vec3::X, 0.1).note("at cos θh = 0 return 0, not 0 · ∞"),
+        ndf("below the surface", at_degrees(120.0), 0.3).note("h below the surface has density 0"),
+    ]
+}
+
+pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    (0..count)
+        .map(|i| {
+            let h = upper(s, if i % 2 == 0 { 0.8 } else { 0.0 });
+            ndf("", h, roughness(s, 0.05, 1.0))
+        })
+        .collect()
+}
+
+pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
+    vec![EstimatorSpec {
+        name: "∫ D(h) cos θh dωh for α = 0.4, uniform hemisphere sampling".into(),
+        analytic: 1.0,
+        samples: 200_000,
+        estimate: Box::new(move |s: &mut Sampler| {
+            Ok({
+                let h = uniform_hemisphere(s.next_2d());
+                (t.beckmann_ndf(h, 0.4) * h.z / uniform_hemisphere_pdf()) as f64
+            })
+        }),
+    }]
+}

@@ -1,0 +1,101 @@
+//! Cases of `brdf_check`: BRDFs whose plausibility is known, judged by the three verdicts.
+
+use super::CaseInput;
+use super::random::range;
+use crate::grade::call::Call;
+use crate::grade::case::Rule;
+use crate::grade::test_brdf::TestBrdf;
+use crate::sampling::Sampler;
+use std::f32::consts::TAU;
+
+const SAMPLES: usize = 20_000;
+
+/// Scale of the odd-power BRDFs: small, so their albedo (about 0.1 k/0.05 at grazing, where
+/// the Monte Carlo estimate is noisiest) stays far below 1 and only positivity is in doubt.
+const ODD_K: f32 = 0.005;
+
+fn check(name: &str, brdf: TestBrdf, seed: u64, albedo: Option<f64>) -> CaseInput {
+    CaseInput::new(
+        name,
+        Call::BrdfCheck {
+            brdf,
+            seed,
+            samples: SAMPLES,
+        },
+    )
+    .rule(Rule::Plausibility { albedo })
+}
+
+/// Share by which a Lambertian's reported albedo may miss its true albedo (Monte Carlo noise
+/// and the maximum over incident directions).
+const LAMBERT_ALBEDO: Option<f64> = Some(0.25);
+
+pub fn fixed() -> Vec<CaseInput> {
+    vec![
+        check(
+            "Lambert is plausible",
+            TestBrdf::Lambert { albedo: 0.5 },
+            11,
+            LAMBERT_ALBEDO,
+        )
+        .note("albedo = mean of f cos θo / pdf over wo"),
+        check(
+            "errata §2.6.3: the worksheet's k = (n+1)/(2π) gains energy",
+            TestBrdf::CosinePower { k: 3.0 / TAU, n: 2 },
+            12,
+            None,
+        )
+        .note("its albedo is 2πk/((n+1) cos θi): test incident directions near grazing"),
+        check(
+            "errata §2.6.1: odd n is negative",
+            TestBrdf::CosinePower { k: ODD_K, n: 3 },
+            13,
+            None,
+        )
+        .note("(wi·wo)³ < 0 when wi and wo are more than 90° apart"),
+        check(
+            "a BRDF of wi alone is not reciprocal",
+            TestBrdf::IncidentOnly,
+            14,
+            None,
+        )
+        .note("compare f(wi, wo) with f(wo, wi)"),
+    ]
+}
+
+pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    (0..count.min(4))
+        .map(|i| {
+            let seed = (s.next_f64() * 1e9) as u64;
+            match i {
+                0 => check(
+                    "Lambert",
+                    TestBrdf::Lambert {
+                        albedo: range(s, 0.1, 0.7),
+                    },
+                    seed,
+                    LAMBERT_ALBEDO,
+                ),
+                1 => {
+                    let n = if s.next_1d() < 0.5 { 2 } else { 4 };
+                    check(
+                        "k (wi·wo)^n / (cos θi cos θo), k = (n+1)/(2π)",
+                        TestBrdf::CosinePower {
+                            k: (n + 1) as f32 / TAU,
+                            n,
+                        },
+                        seed,
+                        None,
+                    )
+                }
+                2 => check(
+                    "odd power",
+                    TestBrdf::CosinePower { k: ODD_K, n: 5 },
+                    seed,
+                    None,
+                ),
+                _ => check("wi alone", TestBrdf::IncidentOnly, seed, None),
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,66 @@
+//! Cases of `cosine_pdf`, and the irradiance estimator built on `cosine_sample`.
+
+use super::polygon::{hits_rectangle, projected_solid_angle};
+use super::random::upper;
+use super::{CaseInput, EstimatorSpec};
+use crate::grade::call::Call;
+use crate::sampling::Sampler;
+use crate::worksheet::Tasks;
+use glam::Vec3;
+
+const PDF: &str = "the density is cos θ / π above the surface and 0 below";
+
+pub fn fixed() -> Vec<CaseInput> {
+    let pdf = |name: &str, w: Vec3| CaseInput::new(name, Call::CosinePdf { w }).note(PDF);
+    vec![
+        pdf("normal", Vec3::Z),
+        pdf("45°", Vec3::new(0.0, 1.0, 1.0).normalize()),
+        pdf("grazing", Vec3::X),
+        pdf("below the surface", Vec3::new(0.6, 0.0, -0.8)),
+    ]
+}
+
+pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    (0..count)
+        .map(|i| {
+            let w = upper(s, 0.0);
+            let w = if i % 6 == 5 { -w } else { w };
+            CaseInput::new("", Call::CosinePdf { w }).note(PDF)
+        })
+        .collect()
+}
+
+/// The errata's MIS light, a unit square at height 1 off to one side of the normal.
+pub const QUAD_Z: f32 = 1.0;
+/// Its extent along x.
+pub const QUAD_X: (f32, f32) = (0.5, 1.5);
+/// Its extent along y.
+pub const QUAD_Y: (f32, f32) = (-0.5, 0.5);
+
+/// The square's corners.
+pub fn quad() -> [Vec3; 4] {
+    [
+        Vec3::new(QUAD_X.0, QUAD_Y.0, QUAD_Z),
+        Vec3::new(QUAD_X.1, QUAD_Y.0, QUAD_Z),
+        Vec3::new(QUAD_X.1, QUAD_Y.1, QUAD_Z),
+        Vec3::new(QUAD_X.0, QUAD_Y.1, QUAD_Z),
+    ]
+}
+
+pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
+    vec![EstimatorSpec {
+        name: "irradiance from a unit-radiance square light, cosine sampling".into(),
+        analytic: projected_solid_angle(&quad()),
+        samples: 200_000,
+        estimate: Box::new(move |s: &mut Sampler| {
+            Ok({
+                let w = t.cosine_sample(s.next_2d());
+                if hits_rectangle(w, QUAD_Z, QUAD_X, QUAD_Y) {
+                    (w.z / t.cosine_pdf(w)) as f64
+                } else {
+                    0.0
+                }
+            })
+        }),
+    }]
+}

@@ -1,0 +1,216 @@
+//! The graded inputs of every task: fixed cases (the worksheet's examples, the errata's
+//! traps) and random cases, the sampler setups of the sampling checks, and the estimators
+//! of the estimator checks. One file per task.
+//!
+//! Inputs only: outputs come from the reference, either stored ([`super::expected`]) or,
+//! for hidden cases, computed live.
+
+mod aniso_ndf;
+mod beckmann_ndf;
+mod brdf_check;
+mod cook_torrance;
+mod cosine_sample;
+mod delta_tracking;
+mod fresnel_schlick;
+mod kajiya_kay;
+mod mis;
+mod ndf_sample;
+mod path_trace;
+mod phong;
+mod polygon;
+mod random;
+mod reflect;
+mod refract_stack;
+mod smith_g1;
+
+use super::call::{Call, SampleCall};
+use super::case::{Rule, ValueCase};
+use super::panics;
+use super::tolerance::Tolerance;
+use crate::sampling::Sampler;
+use crate::worksheet::{TaskId, Tasks};
+use anyhow::bail;
+
+pub use polygon::projected_solid_angle;
+
+/// A value case before its expected output is known.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseInput {
+    /// Where the case comes from.
+    pub name: String,
+    /// The call.
+    pub call: Call,
+    /// How outputs are compared.
+    pub rule: Rule,
+    /// The usual cause of a failure of this case.
+    pub note: Option<String>,
+}
+
+impl CaseInput {
+    /// A case compared within the f32 tolerance.
+    pub fn new(name: impl Into<String>, call: Call) -> Self {
+        Self {
+            name: name.into(),
+            call,
+            rule: Rule::Close(Tolerance::F32),
+            note: None,
+        }
+    }
+
+    /// The same case with a note shown when it fails.
+    pub fn note(mut self, note: impl Into<String>) -> Self {
+        self.note = Some(note.into());
+        self
+    }
+
+    /// The same case with another comparison rule.
+    pub fn rule(mut self, rule: Rule) -> Self {
+        self.rule = rule;
+        self
+    }
+}
+
+/// Random cases per task in the public data.
+pub const PUBLIC_RANDOM: usize = 24;
+/// Random cases per task added by `--hidden-seed`.
+pub const HIDDEN_RANDOM: usize = 24;
+/// Seed of the public random cases (fixed: they are stored).
+pub const PUBLIC_SEED: u64 = 0x5eed_2024;
+
+fn fixed(task: TaskId) -> Vec<CaseInput> {
+    match task {
+        TaskId::Reflect => reflect::fixed(),
+        TaskId::RefractStack => refract_stack::fixed(),
+        TaskId::FresnelSchlick => fresnel_schlick::fixed(),
+        TaskId::CosineSample => cosine_sample::fixed(),
+        TaskId::SmithG1 => smith_g1::fixed(),
+        TaskId::CookTorrance => cook_torrance::fixed(),
+        TaskId::AnisoNdf => aniso_ndf::fixed(),
+        TaskId::Phong => phong::fixed(),
+        TaskId::KajiyaKay => kajiya_kay::fixed(),
+        TaskId::BeckmannNdf => beckmann_ndf::fixed(),
+        TaskId::NdfSample => ndf_sample::fixed(),
+        TaskId::BrdfCheck => brdf_check::fixed(),
+        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => Vec::new(),
+    }
+}
+
+fn random(task: TaskId, s: &mut Sampler, count: usize, label: &str) -> Vec<CaseInput> {
+    let cases = match task {
+        TaskId::Reflect => reflect::random(s, count),
+        TaskId::RefractStack => refract_stack::random(s, count),
+        TaskId::FresnelSchlick => fresnel_schlick::random(s, count),
+        TaskId::CosineSample => cosine_sample::random(s, count),
+        TaskId::SmithG1 => smith_g1::random(s, count),
+        TaskId::CookTorrance => cook_torrance::random(s, count),
+        TaskId::AnisoNdf => aniso_ndf::random(s, count),
+        TaskId::Phong => phong::random(s, count),
+        TaskId::KajiyaKay => kajiya_kay::random(s, count),
+        TaskId::BeckmannNdf => beckmann_ndf::random(s, count),
+        TaskId::NdfSample => ndf_sample::random(s, count),
+        TaskId::BrdfCheck => brdf_check::random(s, count),
+        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => Vec::new(),
+    };
+    cases
+        .into_iter()
+        .enumerate()
+        .map(|(i, mut c)| {
+            c.name = if c.name.is_empty() {
+                format!("{label} {}", i + 1)
+            } else {
+                format!("{label} {}: {}", i + 1, c.name)
+            };
+            c
+        })
+        .collect()
+}
+
+/// The public cases of `task`: its fixed cases and [`PUBLIC_RANDOM`] random ones.
+pub fn public_inputs(task: TaskId) -> Vec<CaseInput> {
+    let mut s = Sampler::new(PUBLIC_SEED, task as u64);
+    let mut cases = fixed(task);
+    cases.extend(random(task, &mut s, PUBLIC_RANDOM, "random"));
+    cases
+}
+
+/// The hidden cases of `task` for `seed`: [`HIDDEN_RANDOM`] random ones from the same
+/// generators as the public random cases, on other inputs.
+pub fn hidden_inputs(task: TaskId, seed: u64) -> Vec<CaseInput> {
+    let mut s = Sampler::new(seed ^ 0x68_69_64_64_65_6e, task as u64);
+    random(task, &mut s, HIDDEN_RANDOM, "hidden")
+}
+
+/// Evaluates `inputs` on `t` (the reference) into cases with expected outputs. Fails when
+/// an output is not finite or the code panics: expected data must be well defined.
+pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<ValueCase>> {
+    inputs
+        .iter()
+        .map(|input| {
+            let expected = match panics::catch(|| input.call.eval(t)) {
+                Ok(out) if out.is_finite() => out,
+                Ok(out) => bail!(
+                    "{} [{}]: the reference returned {out}",
+                    input.call,
+                    input.name
+                ),
+                Err(p) => bail!(
+                    "{} [{}]: the reference {}",
+                    input.call,
+                    input.name,
+                    p.describe()
+                ),
+            };
+            Ok(ValueCase {
+                name: input.name.clone(),
+                call: input.call.clone(),
+                rule: input.rule,
+                note: input.note.clone(),
+                expected,
+            })
+        })
+        .collect()
+}
+
+/// The sampler setups whose distributions the sampling check tests.
+pub fn sampling_setups(task: TaskId) -> Vec<SampleCall> {
+    match task {
+        TaskId::CosineSample => vec![SampleCall::CosineSample],
+        TaskId::NdfSample => ndf_sample::setups(),
+        _ => Vec::new(),
+    }
+}
+
+/// An estimator with a known mean, built on an implementation's task functions.
+pub struct EstimatorSpec<'a> {
+    /// What it estimates.
+    pub name: String,
+    /// The analytic value of its mean.
+    pub analytic: f64,
+    /// How many estimates the check draws.
+    pub samples: usize,
+    /// One estimate per call.
+    pub estimate: Box<super::estimator::Estimator<'a>>,
+}
+
+/// The estimators of the estimator check of `task`, on implementation `t`.
+pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
+    match task {
+        TaskId::CosineSample => cosine_sample::estimators(t),
+        TaskId::AnisoNdf => aniso_ndf::estimators(t),
+        TaskId::BeckmannNdf => beckmann_ndf::estimators(t),
+        TaskId::NdfSample => ndf_sample::estimators(t),
+        TaskId::PathTrace => path_trace::estimators(t),
+        TaskId::Mis => mis::estimators(t),
+        TaskId::DeltaTracking => delta_tracking::estimators(t),
+        _ => Vec::new(),
+    }
+}
+
+/// Pairs of one estimator in two units of length, whose variances must agree (see the
+/// units check in [`super::checks`]).
+pub fn unit_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
+    match task {
+        TaskId::Mis => mis::unit_pairs(t),
+        _ => Vec::new(),
+    }
+}

@@ -1,0 +1,295 @@
+//! Every check of one task, run on one implementation: the values, sampling, estimator and
+//! stability checks that fit the task, with the task's points split between them.
+
+use super::call::SampleCall;
+use super::case::ValueCase;
+use super::catalogue::{self, EstimatorSpec};
+use super::estimator;
+use super::expected::TaskData;
+use super::panics;
+use super::sampling::{self, SamplingFailure, SamplingTarget};
+use super::stability;
+use super::stats::sidak;
+use super::values;
+use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
+use crate::sampling::Sampler;
+use crate::worksheet::{TaskId, Tasks};
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
+
+/// The declared false-failure rate of each task's statistical checks together: a correct
+/// implementation fails a task's sampling and estimator checks with this probability
+/// (Šidák-corrected over the sub-tests).
+pub const TASK_ALPHA: f64 = 1e-3;
+
+/// Samples per sampling sub-test.
+pub const SAMPLING_SAMPLES: usize = 200_000;
+
+/// Relative weights of the check kinds within a task (split evenly between a kind's
+/// sub-tests).
+fn kind_weight(kind: CheckKind) -> f64 {
+    match kind {
+        CheckKind::Values => 2.0,
+        CheckKind::Sampling | CheckKind::Estimator | CheckKind::Stability => 1.0,
+        CheckKind::Image => 2.0,
+    }
+}
+
+/// What grading a task needs besides the implementation: its stored data, the hidden cases
+/// and the seed of the statistical checks.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct TaskInput {
+    /// The stored expected data (`None` when the task has no stored file).
+    pub data: Option<TaskData>,
+    /// Hidden cases with the reference's outputs.
+    pub hidden: Vec<ValueCase>,
+    /// Seed of the statistical checks.
+    pub seed: u64,
+}
+
+/// Runs every check of `task` on `t`.
+pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
+    let mut checks = Vec::new();
+    let data = input.data.clone().unwrap_or_default();
+    if !data.values.is_empty() {
+        checks.push(values::run("values", &data.values, Visibility::Visible, t));
+    }
+    if !input.hidden.is_empty() {
+        checks.push(values::run(
+            "values (hidden cases)",
+            &input.hidden,
+            Visibility::Hidden,
+            t,
+        ));
+    }
+    let estimators = catalogue::estimators(task, t);
+    let statistical = data.sampling.len() + estimators.len();
+    let alpha = sidak(TASK_ALPHA, statistical);
+    for (i, case) in data.sampling.iter().enumerate() {
+        let seed = (input.seed, 100 + i as u64);
+        checks.push(sampling_check(t, &case.call, &case.target, alpha, seed));
+    }
+    #[cfg(feature = "solutions")]
+    let mut reference: Vec<Option<EstimatorSpec<'_>>> =
+        catalogue::estimators(task, &crate::implementation::Reference)
+            .into_iter()
+            .map(Some)
+            .collect();
+    #[cfg(not(feature = "solutions"))]
+    let mut reference: Vec<Option<EstimatorSpec<'_>>> = Vec::new();
+    reference.resize_with(estimators.len(), || None);
+    for (i, (spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
+        checks.push(estimator_check(
+            spec,
+            reference,
+            alpha,
+            (input.seed, 200 + i as u64),
+        ));
+    }
+    for (i, (a, b)) in catalogue::unit_pairs(task, t).into_iter().enumerate() {
+        checks.push(units_check(a, b, (input.seed, 300 + i as u64)));
+    }
+    let cases = crate::stability::cases_for::<T>(task);
+    if !cases.is_empty() {
+        checks.push(stability::run(t, &cases));
+    }
+    spread_weights(&mut checks);
+    checks
+}
+
+/// Gives each kind its weight, split between the kind's checks.
+fn spread_weights(checks: &mut [CheckResult]) {
+    for kind in [
+        CheckKind::Values,
+        CheckKind::Sampling,
+        CheckKind::Estimator,
+        CheckKind::Image,
+        CheckKind::Stability,
+    ] {
+        let count = checks.iter().filter(|c| c.kind == kind).count();
+        for c in checks.iter_mut().filter(|c| c.kind == kind) {
+            c.weight = kind_weight(kind) / count as f64;
+        }
+    }
+}
+
+fn sampling_check<T: Tasks>(
+    t: &T,
+    call: &SampleCall,
+    target: &SamplingTarget,
+    alpha: f64,
+    seed: (u64, u64),
+) -> CheckResult {
+    let start = Instant::now();
+    let mut result = CheckResult::new(format!("sampling: {call}"), CheckKind::Sampling);
+    result.total = 1;
+    result.alpha = alpha;
+    let mut sampler = Sampler::new(seed.0, seed.1);
+    let outcome = panics::catch(|| {
+        sampling::test_sampler(target, SAMPLING_SAMPLES, alpha, &mut sampler, |u| {
+            call.sample(t, u)
+        })
+    });
+    match outcome {
+        Ok(Ok(histogram)) => {
+            result.summary = format!(
+                "{} samples match the reference density (χ² = {:.1}, {} dof, p = {:.3})",
+                SAMPLING_SAMPLES, histogram.chi2, histogram.dof, histogram.p_value
+            );
+            result.p_values.push(histogram.p_value);
+            result.detail = Some(Detail::Sampling(histogram));
+        }
+        Ok(Err(SamplingFailure::Domain(message))) => {
+            result.summary = "a sample is not a valid direction".into();
+            result.fail(format!("{call}, {message}"));
+        }
+        Ok(Err(SamplingFailure::Distribution(histogram))) => {
+            result.summary = format!(
+                "the samples do not follow the reference density (χ² = {:.1}, {} dof, p = {:.2e} < α = {:.1e})",
+                histogram.chi2, histogram.dof, histogram.p_value, alpha
+            );
+            result.fail(format!("{call}: {}", histogram.worst_cell()));
+            result.p_values.push(histogram.p_value);
+            result.detail = Some(Detail::Sampling(*histogram));
+        }
+        Err(p) => {
+            result.summary = "the sampler panicked".into();
+            result.fail_panic(&call.to_string(), &p);
+        }
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+fn estimator_check(
+    mut spec: EstimatorSpec<'_>,
+    reference: Option<EstimatorSpec<'_>>,
+    alpha: f64,
+    seed: (u64, u64),
+) -> CheckResult {
+    let start = Instant::now();
+    let mut result = CheckResult::new(format!("estimator: {}", spec.name), CheckKind::Estimator);
+    result.total = 1;
+    result.alpha = alpha;
+    let mut reference = reference.map(|r| r.estimate);
+    let outcome = panics::catch(|| {
+        estimator::test_estimator(
+            &spec.name,
+            spec.analytic,
+            spec.samples,
+            alpha,
+            seed,
+            spec.estimate.as_mut(),
+            reference.as_deref_mut(),
+        )
+    });
+    match outcome {
+        Ok(Ok(stats)) => {
+            result.summary = stats.describe();
+            result.p_values.push(stats.p_value);
+            result.detail = Some(Detail::Estimator(stats));
+        }
+        Ok(Err(failure)) => {
+            result.summary = "the estimator is biased or not finite".into();
+            result.fail(failure.message);
+            if let Some(stats) = failure.stats {
+                result.p_values.push(stats.p_value);
+                result.detail = Some(Detail::Estimator(stats));
+            }
+        }
+        Err(p) => {
+            result.summary = "the estimator panicked".into();
+            result.fail_panic(&spec.name, &p);
+        }
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// Largest accepted ratio between the variances of one estimator in two units of length.
+/// Sampling noise of the two variances stays within a few percent at the sample counts used;
+/// weights that mix measures change the variance many times over.
+pub const UNIT_VARIANCE_RATIO: f64 = 1.5;
+
+fn units_check(
+    mut a: EstimatorSpec<'_>,
+    mut b: EstimatorSpec<'_>,
+    seed: (u64, u64),
+) -> CheckResult {
+    let start = Instant::now();
+    let mut result = CheckResult::new(
+        format!("estimator: variance independent of units ({})", b.name),
+        CheckKind::Estimator,
+    );
+    result.total = 1;
+    let outcome = panics::catch(|| {
+        estimator::variances(
+            a.samples,
+            seed,
+            a.estimate.as_mut(),
+            b.estimate.as_mut(),
+            a.analytic,
+        )
+    });
+    match outcome {
+        Ok(Ok((va, vb))) => {
+            let ratio = vb / va;
+            result.summary = format!(
+                "variance per sample {} in the original units, {} with lengths scaled (ratio {})",
+                super::output::fmt_num(va),
+                super::output::fmt_num(vb),
+                super::output::fmt_num(ratio)
+            );
+            if !(1.0 / UNIT_VARIANCE_RATIO..=UNIT_VARIANCE_RATIO).contains(&ratio) {
+                result.fail(format!(
+                    "{}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
+                    b.name,
+                    super::output::fmt_num(ratio)
+                ));
+            }
+        }
+        Ok(Err(message)) => result.fail(message),
+        Err(p) => result.fail_panic(&b.name, &p),
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// The status and points of a task from its checks.
+///
+/// A task whose cases all stopped at its own stub is not attempted. One whose failures all
+/// stopped at other tasks' stubs (possible only without the reference, where the student's
+/// own dependencies run) needs those tasks first. Otherwise the points are split by check
+/// weight.
+pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
+    let points = task.info().points as f64;
+    if checks.is_empty() {
+        return (TaskStatus::NoChecks, 0.0);
+    }
+    let failing = || checks.iter().filter(|c| !c.passed);
+    let stubbed: Vec<&str> = failing()
+        .flat_map(|c| c.todo_in.iter().map(String::as_str))
+        .collect();
+    let only_stubs = failing().all(|c| c.todo_failed == c.failed);
+    if checks.iter().all(|c| c.not_attempted)
+        && (stubbed.is_empty() || stubbed.contains(&task.name()))
+    {
+        return (TaskStatus::NotAttempted, 0.0);
+    }
+    if let Some(other) = stubbed.iter().find(|t| **t != task.name())
+        && only_stubs
+    {
+        let task = other.to_string();
+        return (TaskStatus::NeedsTask { task }, 0.0);
+    }
+    let total = super::verdict::total(checks.iter().map(|c| c.weight));
+    let passed = super::verdict::total(checks.iter().filter(|c| c.passed).map(|c| c.weight));
+    if checks.iter().all(|c| c.passed) {
+        (TaskStatus::Passed, points)
+    } else {
+        (TaskStatus::Failed, points * passed / total)
+    }
+}

@@ -1,0 +1,265 @@
+//! The image check: a student's render against the reference, pixel-channel by
+//! pixel-channel, by a z-test on the difference of the two Monte Carlo means (the scheme of
+//! Mitsuba's test suite). A render passes when at least [`PASS_FRACTION`] of its
+//! pixel-channels pass; a false-colour image shows where and in which direction it differs.
+
+use super::verdict::{CheckKind, CheckResult, Detail};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// A Monte Carlo render: the per-pixel mean and the variance of that mean, linear RGB,
+/// row-major, 3 floats per pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageStats {
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// Mean radiance per pixel-channel.
+    pub mean: Vec<f32>,
+    /// Variance of each mean (sample variance / sample count).
+    pub variance: Vec<f32>,
+}
+
+/// Share of pixel-channels that must pass for the render to pass.
+pub const PASS_FRACTION: f64 = 0.995;
+
+/// |z| above which a pixel-channel fails. Two-sided α = 1e-3 per pixel-channel, so a correct
+/// render fails about 0.1 % of its pixel-channels, well under the 0.5 % allowed.
+pub const Z_CRITICAL: f64 = 3.290_526_731;
+
+/// Variance floor, so pixels where both renders are exactly constant (black background)
+/// compare by value instead of dividing by zero.
+const VARIANCE_FLOOR: f64 = 1e-12;
+
+/// The outcome of comparing two renders (drawn by the HTML report).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImageDetail {
+    /// The scene or image name.
+    pub name: String,
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// Share of pixel-channels whose |z| ≤ [`Z_CRITICAL`].
+    pub pass_fraction: f64,
+    /// Largest |z| (infinite at a NaN or infinite pixel).
+    #[serde(with = "super::lenient_f64")]
+    pub worst_z: f64,
+    /// The pixel (x, y) where it occurs.
+    pub worst_pixel: (usize, usize),
+    /// Pixel-channels that are NaN or infinite in the student's render.
+    pub non_finite: usize,
+    /// Files written for the report (student, reference, difference PNGs), if any.
+    pub files: Vec<String>,
+}
+
+/// Compares `student` with `reference`; `Err` when the sizes differ.
+pub fn compare(
+    name: &str,
+    student: &ImageStats,
+    reference: &ImageStats,
+) -> Result<(ImageDetail, Vec<f64>), String> {
+    if (student.width, student.height) != (reference.width, reference.height)
+        || student.mean.len() != reference.mean.len()
+        || student.variance.len() != student.mean.len()
+        || reference.variance.len() != reference.mean.len()
+    {
+        return Err(format!(
+            "{name}: the render is {}×{}, the reference {}×{}",
+            student.width, student.height, reference.width, reference.height
+        ));
+    }
+    let mut z = Vec::with_capacity(student.mean.len());
+    let (mut passed, mut non_finite, mut worst) = (0usize, 0usize, (0.0f64, 0, 0));
+    for (i, (((&s, &r), &vs), &vr)) in student
+        .mean
+        .iter()
+        .zip(&reference.mean)
+        .zip(&student.variance)
+        .zip(&reference.variance)
+        .enumerate()
+    {
+        let zi = if !s.is_finite() || !vs.is_finite() {
+            non_finite += 1;
+            f64::INFINITY
+        } else {
+            (s as f64 - r as f64) / (vs as f64 + vr as f64).max(VARIANCE_FLOOR).sqrt()
+        };
+        if zi.abs() <= Z_CRITICAL {
+            passed += 1;
+        }
+        let pixel = i / 3;
+        if zi.abs() > worst.0 {
+            worst = (zi.abs(), pixel % student.width, pixel / student.width);
+        }
+        z.push(zi);
+    }
+    let detail = ImageDetail {
+        name: name.into(),
+        width: student.width,
+        height: student.height,
+        pass_fraction: passed as f64 / z.len().max(1) as f64,
+        worst_z: worst.0,
+        worst_pixel: (worst.1, worst.2),
+        non_finite,
+        files: Vec::new(),
+    };
+    Ok((detail, z))
+}
+
+impl ImageDetail {
+    /// True when enough pixel-channels pass.
+    pub fn passed(&self) -> bool {
+        self.pass_fraction >= PASS_FRACTION
+    }
+
+    /// One line for reports.
+    pub fn describe(&self) -> String {
+        format!(
+            "{}: {:.2} % of pixel-channels within |z| ≤ {:.2} (need {:.1} %); worst |z| = {:.1} at pixel ({}, {}){}",
+            self.name,
+            100.0 * self.pass_fraction,
+            Z_CRITICAL,
+            100.0 * PASS_FRACTION,
+            self.worst_z,
+            self.worst_pixel.0,
+            self.worst_pixel.1,
+            if self.non_finite > 0 {
+                format!("; {} pixel-channels are NaN or infinite", self.non_finite)
+            } else {
+                String::new()
+            }
+        )
+    }
+}
+
+/// The image check of one render: compares `student` with `reference` and, given a report
+/// directory, writes student | reference | difference PNGs there for the HTML page.
+pub fn run(
+    name: &str,
+    student: &ImageStats,
+    reference: &ImageStats,
+    report_dir: Option<&Path>,
+) -> CheckResult {
+    let start = std::time::Instant::now();
+    let mut result = CheckResult::new(format!("image: {name}"), CheckKind::Image);
+    result.total = 1;
+    match compare(name, student, reference) {
+        Err(message) => result.fail(message),
+        Ok((mut detail, z)) => {
+            if let Some(dir) = report_dir {
+                match super::report::images::write_triple(dir, name, student, reference, &z) {
+                    Ok(files) => detail.files = files,
+                    Err(e) => result.summary = format!("(images not written: {e:#}) "),
+                }
+            }
+            result.summary += &detail.describe();
+            if !detail.passed() {
+                result.fail(detail.describe());
+            }
+            result.detail = Some(Detail::Image(detail));
+        }
+    }
+    result.finish();
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// A false-colour picture of per-pixel-channel z-scores (3 per pixel): for each pixel the
+/// channel with the largest |z|, blue where the student is too dark, red where too bright,
+/// white where they agree, saturating at |z| = 2 `Z_CRITICAL`; non-finite pixels are green.
+/// Returns 8-bit RGB, row-major.
+pub fn false_colour(z: &[f64]) -> Vec<u8> {
+    z.chunks(3)
+        .flat_map(|px| {
+            let zi = px
+                .iter()
+                .copied()
+                .max_by(|a, b| a.abs().total_cmp(&b.abs()))
+                .unwrap_or(0.0);
+            if !zi.is_finite() {
+                return [0, 200, 0];
+            }
+            let t = (zi.abs() / (2.0 * Z_CRITICAL)).min(1.0);
+            let fade = (255.0 * (1.0 - t)) as u8;
+            if zi > 0.0 {
+                [255, fade, fade]
+            } else {
+                [fade, fade, 255]
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::Sampler;
+
+    fn render(width: usize, height: usize, value: f32, sigma: f32, seed: u64) -> ImageStats {
+        let mut s = Sampler::new(seed, 0);
+        let n = width * height * 3;
+        // A Box-Muller normal deviate per pixel-channel around `value`.
+        let mean = (0..n)
+            .map(|_| {
+                let u = s.next_2d();
+                let g = (-2.0 * (1.0 - u.x).ln()).sqrt() * (std::f32::consts::TAU * u.y).cos();
+                value + sigma * g
+            })
+            .collect();
+        ImageStats {
+            width,
+            height,
+            mean,
+            variance: vec![sigma * sigma; n],
+        }
+    }
+
+    #[test]
+    fn renders_of_the_same_scene_agree_and_a_darker_one_does_not() {
+        let reference = render(64, 48, 0.5, 0.01, 1);
+        let (detail, _) = compare("same", &render(64, 48, 0.5, 0.01, 2), &reference).unwrap();
+        assert!(detail.passed(), "{}", detail.describe());
+        let (detail, z) = compare("dark", &render(64, 48, 0.45, 0.01, 3), &reference).unwrap();
+        assert!(!detail.passed());
+        let picture = false_colour(&z);
+        assert_eq!(picture.len(), 64 * 48 * 3);
+        assert_eq!(picture[2], 255, "too dark shows blue");
+    }
+
+    #[test]
+    fn the_check_writes_its_images_and_fails_a_biased_render() {
+        let dir = tempfile::tempdir().unwrap();
+        let reference = render(16, 8, 0.5, 0.01, 1);
+        let ok = run(
+            "same",
+            &render(16, 8, 0.5, 0.01, 2),
+            &reference,
+            Some(dir.path()),
+        );
+        assert!(ok.passed, "{}", ok.summary);
+        let Some(Detail::Image(detail)) = &ok.detail else {
+            panic!("no detail")
+        };
+        assert_eq!(detail.files.len(), 3);
+        let bright = run("bright", &render(16, 8, 0.6, 0.01, 3), &reference, None);
+        assert!(!bright.passed);
+        assert!(
+            bright.failures[0].contains("of pixel-channels"),
+            "{:?}",
+            bright.failures
+        );
+    }
+
+    #[test]
+    fn nan_pixels_and_size_mismatches_are_named() {
+        let reference = render(8, 8, 0.5, 0.01, 1);
+        let mut student = render(8, 8, 0.5, 0.01, 2);
+        student.mean[5] = f32::NAN;
+        let (detail, _) = compare("nan", &student, &reference).unwrap();
+        assert_eq!(detail.non_finite, 1);
+        assert!(detail.describe().contains("NaN"));
+        assert!(compare("size", &render(4, 8, 0.5, 0.01, 2), &reference).is_err());
+    }
+}

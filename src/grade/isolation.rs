@@ -1,0 +1,267 @@
+//! The parent side of isolation: starts a worker process for one job, feeds it the job,
+//! enforces the time limit, and turns whatever happened into a result or a crash report.
+
+use super::worker::{Job, RESULT_MARKER, Record, STARTED_MARKER};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::{Duration, Instant};
+
+/// How to start a worker: the program, its arguments and extra environment.
+#[derive(Clone, Debug)]
+pub struct Launcher {
+    /// The executable (normally the running `pbrlab` binary).
+    pub program: PathBuf,
+    /// Arguments that make it a worker (normally `grade-worker`).
+    pub args: Vec<String>,
+    /// Extra environment variables.
+    pub env: Vec<(String, String)>,
+}
+
+impl Launcher {
+    /// The running executable started as `pbrlab grade-worker`. On Linux this is
+    /// `/proc/self/exe`, the very file the grader runs from, even if a rebuild has replaced
+    /// the binary at its path since.
+    pub fn current_exe() -> anyhow::Result<Self> {
+        let own = Path::new("/proc/self/exe");
+        Ok(Self {
+            program: if own.exists() {
+                own.to_path_buf()
+            } else {
+                std::env::current_exe()?
+            },
+            args: vec!["grade-worker".into()],
+            env: Vec::new(),
+        })
+    }
+
+    fn command(&self) -> Command {
+        let mut cmd = Command::new(&self.program);
+        cmd.args(&self.args);
+        // The student's code must not steer snapshot tooling or print backtraces into the
+        // report; CI mode makes any insta use in the child read-only.
+        for (key, _) in std::env::vars_os() {
+            if key.to_string_lossy().starts_with("INSTA_") {
+                cmd.env_remove(key);
+            }
+        }
+        cmd.env("CI", "true")
+            .env_remove("RUST_BACKTRACE")
+            .env_remove("RUST_LIB_BACKTRACE");
+        cmd.envs(self.env.iter().map(|(k, v)| (k, v)));
+        cmd
+    }
+}
+
+/// Why a worker run has no result.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WorkerFailure {
+    /// The student's code brought the worker down (the message says how).
+    Student(String),
+    /// The grader failed, not the student's code (the worker could not start, or its
+    /// result could not be read).
+    Grader(String),
+}
+
+/// What a worker run produced.
+#[derive(Debug)]
+pub struct WorkerRun {
+    /// The record with the right nonce, or why there is none.
+    pub outcome: Result<Record, WorkerFailure>,
+    /// What the student's code printed on stdout (and the worker's stderr), truncated.
+    pub output: String,
+    /// Wall time, in seconds.
+    pub seconds: f64,
+}
+
+/// Keep at most this much of the student's output.
+const OUTPUT_LIMIT: usize = 8 * 1024;
+
+/// Runs `job` in a new worker, killing it after `timeout`.
+pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
+    let start = Instant::now();
+    let spawned = launcher
+        .command()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn();
+    let mut child = match spawned {
+        Ok(child) => child,
+        Err(e) => {
+            return WorkerRun {
+                outcome: Err(WorkerFailure::Grader(format!(
+                    "could not start the worker {}: {e}",
+                    launcher.program.display()
+                ))),
+                output: String::new(),
+                seconds: 0.0,
+            };
+        }
+    };
+    let payload = serde_json::to_vec(job).unwrap_or_default();
+    if let Some(mut stdin) = child.stdin.take() {
+        // A worker that dies early closes the pipe; its exit status tells why.
+        let _ = stdin.write_all(&payload);
+    }
+    let nonce = job.nonce.clone();
+    let stdout = child.stdout.take().map(|out| {
+        std::thread::spawn(move || {
+            let (mut record, mut started) = (None, false);
+            let mut printed = String::new();
+            for line in BufReader::new(out).lines() {
+                let Ok(line) = line else { break };
+                if line
+                    .strip_prefix(STARTED_MARKER)
+                    .is_some_and(|rest| rest.trim() == nonce)
+                {
+                    started = true;
+                    continue;
+                }
+                if let Some(rest) = line.strip_prefix(RESULT_MARKER) {
+                    let rest = rest.trim_start();
+                    if let Some(json) = rest.strip_prefix(nonce.as_str()) {
+                        record = Some(serde_json::from_str::<Record>(json.trim()));
+                        continue;
+                    }
+                }
+                if printed.len() < OUTPUT_LIMIT && !line.is_empty() {
+                    printed.push_str(&line);
+                    printed.push('\n');
+                }
+            }
+            (record, started, printed)
+        })
+    });
+    let stderr = child.stderr.take().map(|err| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            let _ = BufReader::new(err)
+                .take(OUTPUT_LIMIT as u64 * 4)
+                .read_to_string(&mut text);
+            text
+        })
+    });
+    let status = wait(&mut child, timeout);
+    let (record, started, printed) =
+        stdout
+            .and_then(|h| h.join().ok())
+            .unwrap_or((None, false, String::new()));
+    let errors = stderr.and_then(|h| h.join().ok()).unwrap_or_default();
+    let seconds = start.elapsed().as_secs_f64();
+    let mut output = printed;
+    if !errors.trim().is_empty() {
+        output.push_str(errors.trim());
+        output.push('\n');
+    }
+    output.truncate(floor_char_boundary(&output, OUTPUT_LIMIT));
+    let outcome = match (status, record) {
+        (Some(_), None) if !started => Err(WorkerFailure::Grader(format!(
+            "the worker did not start: {}",
+            errors
+                .lines()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("no message")
+                .trim()
+        ))),
+        (None, _) => Err(WorkerFailure::Student(format!(
+            "timed out after {} s and was stopped (an infinite loop?)",
+            timeout.as_secs_f64()
+        ))),
+        (Some(_), Some(Ok(record))) => Ok(record),
+        (Some(_), Some(Err(e))) => Err(WorkerFailure::Grader(format!("unreadable result: {e}"))),
+        (Some(status), None) => Err(WorkerFailure::Student(explain(
+            status,
+            &errors,
+            job.memory_limit,
+        ))),
+    };
+    WorkerRun {
+        outcome,
+        output,
+        seconds,
+    }
+}
+
+fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+    if i >= s.len() {
+        return s.len();
+    }
+    while !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// Waits for the child; kills it and returns `None` after `timeout`.
+fn wait(child: &mut Child, timeout: Duration) -> Option<ExitStatus> {
+    let deadline = Instant::now() + timeout;
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Some(status),
+            Ok(None) if Instant::now() < deadline => std::thread::sleep(Duration::from_millis(5)),
+            _ => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return None;
+            }
+        }
+    }
+}
+
+/// Why a worker ended without a result, in words a student can act on.
+fn explain(status: ExitStatus, stderr: &str, memory_limit: u64) -> String {
+    let gib = memory_limit as f64 / (1u64 << 30) as f64;
+    if stderr.contains("has overflowed its stack") {
+        return "overflowed its stack (unbounded recursion?)".into();
+    }
+    if let Some(line) = stderr.lines().find(|l| l.contains("memory allocation of")) {
+        return format!("ran out of memory (limit {gib:.1} GiB): {}", line.trim());
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        if let Some(signal) = status.signal() {
+            return match signal {
+                libc::SIGABRT => "aborted (std::process::abort, or a panic inside a panic)".into(),
+                libc::SIGSEGV | libc::SIGBUS => "crashed with a memory fault (SIGSEGV)".into(),
+                libc::SIGKILL => format!("was killed (out of memory? the limit is {gib:.1} GiB)"),
+                libc::SIGFPE => "crashed with an arithmetic fault (SIGFPE)".into(),
+                other => format!("was killed by signal {other}"),
+            };
+        }
+    }
+    match status.code() {
+        Some(0) => "exited early with status 0 before its checks finished (does the code call \
+                    std::process::exit?)"
+            .into(),
+        Some(code) => {
+            let last = stderr
+                .lines()
+                .rev()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("");
+            format!("exited early with status {code} {}", last.trim())
+                .trim_end()
+                .to_string()
+        }
+        None => "ended without a result".into(),
+    }
+}
+
+/// A fresh nonce for one job: not guessable by code that cannot read the job.
+pub fn nonce() -> String {
+    use std::hash::{BuildHasher, Hasher};
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    h.write_u128(
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_nanos())
+            .unwrap_or(0),
+    );
+    h.write_u32(std::process::id());
+    let a = h.finish();
+    let mut h2 = std::collections::hash_map::RandomState::new().build_hasher();
+    h2.write_u64(a);
+    format!("{a:016x}{:016x}", h2.finish())
+}

@@ -1,0 +1,228 @@
+//! What a task function returned, in a form the grader can store, compare and print.
+//!
+//! Every task output (f32, f64, `Vec3`, `Option<…>`, the report structs) converts into an
+//! [`Output`] tree. Unlike JSON it keeps NaN and infinities, so a message can say "got NaN";
+//! stored reference outputs are always finite.
+
+use crate::bsdf::PlausibilityReport;
+use crate::optics::StackReport;
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// A task function's result: a number, a vector, nothing (`None`) or a record of named fields.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Output {
+    /// `None`.
+    Nothing,
+    /// A scalar.
+    Number(f64),
+    /// A list of scalars (a `Vec3`, a per-interface list, …).
+    Numbers(Vec<f64>),
+    /// A struct, by field name.
+    Record(BTreeMap<String, Output>),
+}
+
+impl Output {
+    /// True when every number in the output is finite.
+    pub fn is_finite(&self) -> bool {
+        match self {
+            Output::Nothing => true,
+            Output::Number(x) => x.is_finite(),
+            Output::Numbers(v) => v.iter().all(|x| x.is_finite()),
+            Output::Record(m) => m.values().all(Output::is_finite),
+        }
+    }
+
+    /// The field `name` of a record.
+    pub fn field(&self, name: &str) -> Option<&Output> {
+        match self {
+            Output::Record(m) => m.get(name),
+            _ => None,
+        }
+    }
+
+    /// The scalar, when the output is one.
+    pub fn as_number(&self) -> Option<f64> {
+        match self {
+            Output::Number(x) => Some(*x),
+            _ => None,
+        }
+    }
+}
+
+/// Widens an f32 through its shortest decimal form, so that 0.1f32 is stored as 0.1 and not
+/// 0.10000000149011612 (reading it back as f32 gives the same bits either way).
+pub fn widen(x: f32) -> f64 {
+    if x.is_finite() {
+        x.to_string().parse().unwrap_or(x as f64)
+    } else {
+        x as f64
+    }
+}
+
+/// Conversion of a task function's return type into an [`Output`].
+pub trait IntoOutput {
+    /// The output tree of `self`.
+    fn into_output(self) -> Output;
+}
+
+impl IntoOutput for f32 {
+    fn into_output(self) -> Output {
+        Output::Number(widen(self))
+    }
+}
+
+impl IntoOutput for f64 {
+    fn into_output(self) -> Output {
+        Output::Number(self)
+    }
+}
+
+impl IntoOutput for Vec3 {
+    fn into_output(self) -> Output {
+        Output::Numbers(self.to_array().map(widen).to_vec())
+    }
+}
+
+impl IntoOutput for usize {
+    fn into_output(self) -> Output {
+        Output::Number(self as f64)
+    }
+}
+
+impl IntoOutput for Vec<f64> {
+    fn into_output(self) -> Output {
+        Output::Numbers(self)
+    }
+}
+
+impl<T: IntoOutput> IntoOutput for Option<T> {
+    fn into_output(self) -> Output {
+        self.map_or(Output::Nothing, IntoOutput::into_output)
+    }
+}
+
+fn record<const N: usize>(fields: [(&str, Output); N]) -> Output {
+    Output::Record(
+        fields
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect(),
+    )
+}
+
+impl IntoOutput for StackReport {
+    fn into_output(self) -> Output {
+        record([
+            ("theta", self.theta.into_output()),
+            ("tir_at", self.tir_at.into_output()),
+            (
+                "perpendicular_shift",
+                self.perpendicular_shift.into_output(),
+            ),
+            ("interface_offset", self.interface_offset.into_output()),
+            (
+                "reflectance_schlick",
+                self.reflectance_schlick.into_output(),
+            ),
+            ("reflectance_exact", self.reflectance_exact.into_output()),
+            (
+                "transmitted_schlick",
+                self.transmitted_schlick.into_output(),
+            ),
+            ("transmitted_exact", self.transmitted_exact.into_output()),
+        ])
+    }
+}
+
+impl IntoOutput for PlausibilityReport {
+    fn into_output(self) -> Output {
+        record([
+            ("min_value", self.min_value.into_output()),
+            (
+                "max_reciprocity_error",
+                self.max_reciprocity_error.into_output(),
+            ),
+            ("max_albedo", self.max_albedo.into_output()),
+            ("worst_wi", self.worst_wi.into_output()),
+        ])
+    }
+}
+
+/// Formats a number for messages: 4 significant digits, scientific when tiny or huge,
+/// and NaN / inf spelled out.
+pub fn fmt_num(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf".into() } else { "-inf".into() }
+    } else if x == 0.0 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&x.abs()) {
+        let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+        let s = format!("{x:.digits$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
+impl fmt::Display for Output {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Output::Nothing => f.write_str("None"),
+            Output::Number(x) => f.write_str(&fmt_num(*x)),
+            Output::Numbers(v) => {
+                let parts: Vec<String> = v.iter().map(|x| fmt_num(*x)).collect();
+                write!(f, "({})", parts.join(", "))
+            }
+            Output::Record(m) => {
+                let parts: Vec<String> = m.iter().map(|(k, v)| format!("{k}: {v}")).collect();
+                write!(f, "{{{}}}", parts.join(", "))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn widening_keeps_the_short_decimal() {
+        assert_eq!(widen(0.1), 0.1);
+        assert_eq!(widen(0.245_583) as f32, 0.245_583f32);
+        assert!(widen(f32::NAN).is_nan());
+    }
+
+    #[test]
+    fn numbers_format_compactly() {
+        assert_eq!(fmt_num(0.040_673_2), "0.04067");
+        assert_eq!(fmt_num(0.245_583), "0.2456");
+        assert_eq!(fmt_num(1.0), "1");
+        assert_eq!(fmt_num(318_309.886), "3.183e5");
+        assert_eq!(fmt_num(f64::NAN), "NaN");
+    }
+
+    #[test]
+    fn outputs_round_trip_through_json() {
+        let out = StackReport {
+            theta: vec![30.0, 19.47],
+            tir_at: None,
+            ..Default::default()
+        }
+        .into_output();
+        let json = serde_json::to_string(&out).unwrap();
+        let back: Output = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, out);
+        let v: Output = serde_json::from_str("[0.6, -0.8, 0.0]").unwrap();
+        assert_eq!(v, Vec3::new(0.6, -0.8, 0.0).into_output());
+    }
+}

@@ -1,0 +1,150 @@
+//! Gradescope's results.json (<https://gradescope-autograders.readthedocs.io>): one test per
+//! task, and one more per task for its hidden cases.
+
+use super::text::details;
+use crate::grade::verdict::{GradeReport, TaskOutcome, TaskStatus, Visibility, total};
+use crate::worksheet::TaskId;
+use serde::Serialize;
+
+/// The top level of results.json.
+#[derive(Debug, Serialize)]
+pub struct Results {
+    /// Total score.
+    pub score: f64,
+    /// Total available.
+    pub max_score: f64,
+    /// Shown above the tests.
+    pub output: String,
+    /// Visibility of the whole result.
+    pub visibility: &'static str,
+    /// Visibility of the autograder's stdout.
+    pub stdout_visibility: &'static str,
+    /// One entry per graded part.
+    pub tests: Vec<Test>,
+}
+
+/// One test entry.
+#[derive(Debug, Serialize)]
+pub struct Test {
+    /// The task and its title.
+    pub name: String,
+    /// Points scored.
+    pub score: f64,
+    /// Points available.
+    pub max_score: f64,
+    /// `passed` or `failed`.
+    pub status: &'static str,
+    /// What was checked and what failed.
+    pub output: String,
+    /// `visible` or `hidden`.
+    pub visibility: &'static str,
+}
+
+fn title(task: &str) -> String {
+    TaskId::parse(task).map_or_else(
+        |_| task.to_string(),
+        |t| format!("{task} — {}", t.info().title),
+    )
+}
+
+/// The tests of one task: its visible checks, and its hidden ones when there are any. The
+/// task's points are split by check weight; a task that crashed or was not attempted scores
+/// 0 in both.
+fn tests_of(t: &TaskOutcome) -> Vec<Test> {
+    let weight_of = |vis: Visibility, passed_only: bool| {
+        total(
+            t.checks
+                .iter()
+                .filter(|c| c.visibility == vis && (c.passed || !passed_only))
+                .map(|c| c.weight),
+        )
+    };
+    let all = total(t.checks.iter().map(|c| c.weight));
+    let share = |w: f64| {
+        if all > 0.0 {
+            t.max_points * w / all
+        } else {
+            t.max_points
+        }
+    };
+    let scored = matches!(t.status, TaskStatus::Passed | TaskStatus::Failed);
+    let group = |vis: Visibility| {
+        let (weight, earned) = (weight_of(vis, false), weight_of(vis, true));
+        let passed = scored && earned == weight;
+        (
+            share(weight),
+            if scored { share(earned) } else { 0.0 },
+            passed,
+        )
+    };
+    let mut output = match &t.status {
+        TaskStatus::Passed => "All checks pass.".to_string(),
+        TaskStatus::NotAttempted => "Not attempted: the functions still stop at todo!().".into(),
+        other => format!("{}.", other.label()),
+    };
+    for c in t
+        .checks
+        .iter()
+        .filter(|c| c.visibility == Visibility::Visible)
+    {
+        output += &format!(
+            "\n{} {}: {}",
+            if c.passed { "✓" } else { "✗" },
+            c.name,
+            c.summary
+        );
+    }
+    let d = details(t);
+    if !d.is_empty() {
+        output += "\n\n";
+        output += &d;
+    }
+    let (max_score, score, passed) = group(Visibility::Visible);
+    let mut tests = vec![Test {
+        name: title(&t.task),
+        score,
+        max_score,
+        status: if passed { "passed" } else { "failed" },
+        output,
+        visibility: "visible",
+    }];
+    if weight_of(Visibility::Hidden, false) > 0.0 {
+        let (max_score, score, passed) = group(Visibility::Hidden);
+        tests.push(Test {
+            name: format!("{} (hidden cases)", title(&t.task)),
+            score,
+            max_score,
+            status: if passed { "passed" } else { "failed" },
+            output: t
+                .checks
+                .iter()
+                .filter(|c| c.visibility == Visibility::Hidden)
+                .map(|c| format!("{}: {}", c.name, c.summary))
+                .collect::<Vec<_>>()
+                .join("\n"),
+            visibility: "hidden",
+        });
+    }
+    tests
+}
+
+/// The Gradescope results of `report`.
+pub fn gradescope(report: &GradeReport) -> Results {
+    let tests: Vec<Test> = report
+        .tasks
+        .iter()
+        .filter(|t| t.max_points > 0.0)
+        .flat_map(tests_of)
+        .collect();
+    Results {
+        score: total(tests.iter().map(|t| t.score)),
+        max_score: total(tests.iter().map(|t| t.max_score)),
+        output: format!(
+            "Graded {} tasks with pbrlab. Run `pbrlab grade` locally for the same public checks.",
+            tests.iter().filter(|t| t.visibility == "visible").count()
+        ),
+        visibility: "visible",
+        stdout_visibility: "hidden",
+        tests,
+    }
+}

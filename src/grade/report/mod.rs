@@ -1,0 +1,33 @@
+//! Reports of a grading run: a terminal table, JSON, Gradescope's results.json and an HTML
+//! page.
+
+mod gradescope;
+mod html;
+pub mod images;
+mod svg;
+mod text;
+
+pub use gradescope::gradescope;
+pub use html::write_html;
+pub use text::{details, text};
+
+/// The output formats of `pbrlab grade --format`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// A table for the terminal.
+    #[default]
+    Text,
+    /// The full report as JSON (what `pbrlab tasks` reads back).
+    Json,
+    /// Gradescope's results.json.
+    Gradescope,
+}
+
+/// `report` in `format`.
+pub fn render(report: &super::verdict::GradeReport, format: Format) -> anyhow::Result<String> {
+    Ok(match format {
+        Format::Text => text(report),
+        Format::Json => serde_json::to_string_pretty(report)?,
+        Format::Gradescope => serde_json::to_string_pretty(&gradescope(report))?,
+    })
+}

@@ -1,0 +1,322 @@
+//! Grading a set of tasks: load the expected data, decide which implementation grades which
+//! task, run one isolated worker per task (in parallel), and assemble the report.
+
+use super::checks::{TaskInput, score};
+use super::expected::{self, TaskData};
+use super::isolation::{self, Launcher};
+use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
+use super::worker::{ImplSpec, Job, JobKind, Record};
+use crate::implementation::ImplChoice;
+use crate::task_set::TaskSet;
+use crate::worksheet::TaskId;
+use anyhow::bail;
+use std::collections::BTreeMap;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+/// Options of one grading run.
+#[derive(Clone, Debug)]
+pub struct GradeOptions {
+    /// Tasks to grade, in worksheet order.
+    pub tasks: Vec<TaskId>,
+    /// Whose code: `student` grades each task with only that task from the student (the
+    /// reference behind its dependencies), `mixed` with every attempted task from the
+    /// student, `reference` the reference alone.
+    pub implementation: ImplChoice,
+    /// Seed of the statistical checks.
+    pub seed: u64,
+    /// Seed of hidden random cases, compared live against the reference.
+    pub hidden_seed: Option<u64>,
+    /// Time limit per task.
+    pub timeout: Duration,
+    /// Address-space limit per worker, in bytes.
+    pub memory_limit: u64,
+    /// Workers running at once.
+    pub jobs: usize,
+}
+
+impl Default for GradeOptions {
+    fn default() -> Self {
+        Self {
+            tasks: TaskId::ALL.to_vec(),
+            implementation: ImplChoice::Student,
+            seed: DEFAULT_SEED,
+            hidden_seed: None,
+            timeout: Duration::from_secs(30),
+            memory_limit: 4 << 30,
+            jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
+        }
+    }
+}
+
+/// The seed of the statistical checks unless one is given.
+pub const DEFAULT_SEED: u64 = 1;
+
+/// The inputs of every task to grade: stored data plus hidden cases, all computed before
+/// any student code runs.
+pub fn prepare(options: &GradeOptions) -> anyhow::Result<BTreeMap<TaskId, TaskInput>> {
+    let mut stored: BTreeMap<TaskId, TaskData> = expected::load_all()?;
+    let mut inputs = BTreeMap::new();
+    for &task in &options.tasks {
+        let hidden = match options.hidden_seed {
+            None => Vec::new(),
+            Some(seed) => hidden_cases(task, seed)?,
+        };
+        inputs.insert(
+            task,
+            TaskInput {
+                data: stored.remove(&task),
+                hidden,
+                seed: options.seed,
+            },
+        );
+    }
+    Ok(inputs)
+}
+
+#[cfg(feature = "solutions")]
+fn hidden_cases(task: TaskId, seed: u64) -> anyhow::Result<Vec<super::case::ValueCase>> {
+    use super::catalogue::{evaluate, hidden_inputs};
+    evaluate(
+        &hidden_inputs(task, seed),
+        &crate::implementation::Reference,
+    )
+}
+
+#[cfg(not(feature = "solutions"))]
+fn hidden_cases(_task: TaskId, _seed: u64) -> anyhow::Result<Vec<super::case::ValueCase>> {
+    bail!("hidden cases are computed by the reference, which this build does not have")
+}
+
+/// Runs `jobs` at most `parallel` at a time, in order of the input.
+fn run_all(
+    launcher: &Launcher,
+    jobs: Vec<Job>,
+    options: &GradeOptions,
+) -> Vec<isolation::WorkerRun> {
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<isolation::WorkerRun>>> =
+        Mutex::new((0..jobs.len()).map(|_| None).collect());
+    std::thread::scope(|scope| {
+        for _ in 0..options.jobs.max(1).min(jobs.len().max(1)) {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(job) = jobs.get(i) else { break };
+                    let run = isolation::run(launcher, job, options.timeout);
+                    if let Ok(mut results) = results.lock() {
+                        results[i] = Some(run);
+                    }
+                }
+            });
+        }
+    });
+    results
+        .into_inner()
+        .unwrap_or_default()
+        .into_iter()
+        .map(|r| {
+            r.unwrap_or(isolation::WorkerRun {
+                outcome: Err(isolation::WorkerFailure::Grader(
+                    "the worker thread did not report".into(),
+                )),
+                output: String::new(),
+                seconds: 0.0,
+            })
+        })
+        .collect()
+}
+
+/// The tasks the student has written, each probed in its own worker (a probe that crashes
+/// or hangs counts as written: it is not the stub).
+pub fn probe_attempted(launcher: &Launcher, options: &GradeOptions) -> Vec<TaskId> {
+    let jobs: Vec<Job> = TaskId::ALL
+        .iter()
+        .map(|t| Job {
+            nonce: isolation::nonce(),
+            implementation: ImplSpec::Student,
+            kind: JobKind::Probe {
+                task: t.name().into(),
+            },
+            memory_limit: options.memory_limit,
+        })
+        .collect();
+    let probe_options = GradeOptions {
+        timeout: options.timeout.min(Duration::from_secs(5)),
+        ..options.clone()
+    };
+    run_all(launcher, jobs, &probe_options)
+        .into_iter()
+        .zip(TaskId::ALL)
+        .filter(|(run, _)| !matches!(run.outcome, Ok(Record::Attempted { attempted: false })))
+        .map(|(_, task)| task)
+        .collect()
+}
+
+/// The tasks whose student code runs while `task` is graded: the task alone for `student`
+/// (so a mistake in a task it builds on is charged to that task only), every attempted task
+/// for `mixed`, none for `reference`.
+pub fn student_tasks_for(task: TaskId, choice: ImplChoice, attempted: &[TaskId]) -> TaskSet {
+    match choice {
+        ImplChoice::Reference => TaskSet::EMPTY,
+        ImplChoice::Student => [task].into_iter().collect(),
+        ImplChoice::Mixed => attempted.iter().copied().collect(),
+    }
+}
+
+/// Which implementation grades `task`. Without the reference compiled in, only the student's
+/// own code can run.
+fn spec_for(
+    task: TaskId,
+    options: &GradeOptions,
+    attempted: &[TaskId],
+) -> anyhow::Result<ImplSpec> {
+    if !cfg!(feature = "solutions") {
+        if options.implementation != ImplChoice::Student {
+            bail!(
+                "--impl {} needs the reference solutions, which this build does not have",
+                format!("{:?}", options.implementation).to_lowercase()
+            );
+        }
+        return Ok(ImplSpec::Student);
+    }
+    let student = student_tasks_for(task, options.implementation, attempted);
+    Ok(if student.is_empty() {
+        ImplSpec::Reference
+    } else {
+        ImplSpec::Mixed {
+            student: student.iter().map(|t| t.name().to_string()).collect(),
+        }
+    })
+}
+
+/// Grades `options.tasks` with workers started by `launcher`.
+pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<GradeReport> {
+    let start = Instant::now();
+    let mut inputs = prepare(options)?;
+    let attempted = if options.implementation == ImplChoice::Mixed {
+        probe_attempted(launcher, options)
+    } else {
+        Vec::new()
+    };
+    let mut jobs = Vec::new();
+    for &task in &options.tasks {
+        jobs.push(Job {
+            nonce: isolation::nonce(),
+            implementation: spec_for(task, options, &attempted)?,
+            kind: JobKind::Grade {
+                task: task.name().into(),
+                input: inputs.remove(&task).unwrap_or_default(),
+            },
+            memory_limit: options.memory_limit,
+        });
+    }
+    let has_checks: Vec<bool> = jobs
+        .iter()
+        .zip(&options.tasks)
+        .map(|(job, task)| match &job.kind {
+            JobKind::Grade { input, .. } => task_has_checks(*task, input),
+            JobKind::Probe { .. } => false,
+        })
+        .collect();
+    // Tasks without any check are reported without starting a worker.
+    let (to_run, skipped): (Vec<_>, Vec<_>) =
+        jobs.into_iter().zip(has_checks).partition(|(_, has)| *has);
+    let runs = run_all(
+        launcher,
+        to_run.iter().map(|(j, _)| j.clone()).collect(),
+        options,
+    );
+    let mut outcomes: BTreeMap<TaskId, TaskOutcome> = BTreeMap::new();
+    for ((job, _), run) in to_run.iter().zip(runs) {
+        let task = job_task(job);
+        outcomes.insert(task, outcome(task, run));
+    }
+    for (job, _) in skipped {
+        let task = job_task(&job);
+        outcomes.insert(
+            task,
+            TaskOutcome {
+                task: task.name().into(),
+                status: TaskStatus::NoChecks,
+                points: 0.0,
+                max_points: 0.0,
+                checks: Vec::new(),
+                output: String::new(),
+                seconds: 0.0,
+            },
+        );
+    }
+    let implementation = format!("{:?}", options.implementation).to_lowercase();
+    Ok(GradeReport::new(
+        &implementation,
+        options.seed,
+        options.hidden_seed.is_some(),
+        outcomes.into_values().collect(),
+        start.elapsed().as_secs_f64(),
+    ))
+}
+
+fn job_task(job: &Job) -> TaskId {
+    match &job.kind {
+        JobKind::Grade { task, .. } | JobKind::Probe { task } => {
+            TaskId::parse(task).unwrap_or(TaskId::Reflect)
+        }
+    }
+}
+
+/// True when `task` has at least one check to run.
+pub fn task_has_checks(task: TaskId, input: &TaskInput) -> bool {
+    input
+        .data
+        .as_ref()
+        .is_some_and(|d| !d.values.is_empty() || !d.sampling.is_empty())
+        || !input.hidden.is_empty()
+        || has_code_checks(task)
+}
+
+/// Tasks whose estimator or stability checks need no stored data.
+fn has_code_checks(task: TaskId) -> bool {
+    let t = &crate::implementation::Student;
+    !super::catalogue::estimators(task, t).is_empty()
+        || !crate::stability::cases_for::<crate::implementation::Student>(task).is_empty()
+}
+
+/// A task's outcome from its worker run.
+pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
+    let max_points = task.info().points as f64;
+    let (status, points, checks) = match run.outcome {
+        Ok(Record::Checks { checks }) => {
+            let (status, points) = score(task, &checks);
+            (status, points, checks)
+        }
+        Ok(Record::Attempted { .. }) => (
+            TaskStatus::GraderError {
+                message: "the worker answered a probe instead of grading".into(),
+            },
+            0.0,
+            Vec::new(),
+        ),
+        Ok(Record::Error { message }) | Err(isolation::WorkerFailure::Grader(message)) => {
+            (TaskStatus::GraderError { message }, 0.0, Vec::new())
+        }
+        Err(isolation::WorkerFailure::Student(reason)) => {
+            (TaskStatus::Crashed { reason }, 0.0, Vec::new())
+        }
+    };
+    let max_points = if status == TaskStatus::NoChecks {
+        0.0
+    } else {
+        max_points
+    };
+    TaskOutcome {
+        task: task.name().into(),
+        status,
+        points,
+        max_points,
+        checks,
+        output: run.output,
+        seconds: run.seconds,
+    }
+}

@@ -1,0 +1,108 @@
+//! The values check: a task's functions on fixed worksheet inputs and random inputs,
+//! against the reference's stored outputs.
+
+use super::case::{Rule, ValueCase};
+use super::output::{Output, fmt_num};
+use super::panics;
+use super::tolerance::Error;
+use super::verdict::{CheckKind, CheckResult, Visibility, Worst};
+use crate::worksheet::Tasks;
+use std::time::Instant;
+
+/// Calls `t` on every case and judges each output; every failure message names the call,
+/// its input, what came back, what was expected and the case's note.
+pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tasks) -> CheckResult {
+    let start = Instant::now();
+    let mut result = CheckResult::new(name, CheckKind::Values);
+    result.visibility = visibility;
+    result.total = cases.len();
+    let mut worst: Option<Worst> = None;
+    let mut ratios = Vec::new();
+    for case in cases {
+        let outcome = panics::catch(|| case.call.eval(t));
+        let (error, failure) = match &outcome {
+            Ok(got) => match case.judge(got) {
+                Ok(error) => (error, None),
+                Err(problem) => {
+                    if matches!(case.rule, Rule::Close(_)) {
+                        ratios.extend(ratios_of(got, &case.expected));
+                    }
+                    (super::tolerance::error(got, &case.expected), Some(problem))
+                }
+            },
+            Err(p) => {
+                result.fail_panic(&format!("{} [{}]", case.call, case.name), p);
+                (Error::UNBOUNDED, None)
+            }
+        };
+        if worst.as_ref().is_none_or(|w| error.abs > w.error.abs) {
+            worst = Some(Worst {
+                case: format!("{} [{}]", case.call, case.name),
+                error,
+            });
+        }
+        if let Some(problem) = failure {
+            let note = case
+                .note
+                .as_deref()
+                .map(|n| format!(" ({n})"))
+                .unwrap_or_default();
+            result.fail(format!("{}: {problem}{note} [{}]", case.call, case.name));
+        }
+    }
+    result.finish();
+    result.worst = worst;
+    result.summary = format!(
+        "{}/{} cases agree with the reference",
+        result.total - result.failed,
+        result.total
+    );
+    if let Some(factor) = common_factor(&ratios) {
+        result.summary += &format!(
+            "; every failing value is {} × the expected one — a constant factor is missing or extra",
+            fmt_num(factor)
+        );
+    }
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// got / expected for every component where both are finite and the expected is not 0.
+fn ratios_of(got: &Output, expected: &Output) -> Vec<f64> {
+    let pairs: Vec<(f64, f64)> = match (got, expected) {
+        (Output::Number(g), Output::Number(e)) => vec![(*g, *e)],
+        (Output::Numbers(g), Output::Numbers(e)) if g.len() == e.len() => {
+            g.iter().copied().zip(e.iter().copied()).collect()
+        }
+        _ => return vec![f64::NAN],
+    };
+    pairs
+        .into_iter()
+        .filter(|(g, e)| g.is_finite() && *e != 0.0 && e.abs() > 1e-12)
+        .map(|(g, e)| g / e)
+        .collect()
+}
+
+/// The factor shared by all ratios (to 0.1 %), when there are at least three and it is not 1.
+fn common_factor(ratios: &[f64]) -> Option<f64> {
+    let first = *ratios.first()?;
+    let shared = ratios.len() >= 3
+        && first.is_finite()
+        && ratios
+            .iter()
+            .all(|r| (r - first).abs() <= 1e-3 * first.abs());
+    (shared && (first - 1.0).abs() > 1e-2).then_some(first)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_constant_factor_is_diagnosed() {
+        assert_eq!(common_factor(&[4.0, 4.0, 4.000_01]), Some(4.0));
+        assert_eq!(common_factor(&[4.0, 4.0]), None);
+        assert_eq!(common_factor(&[4.0, 2.0, 4.0]), None);
+        assert_eq!(common_factor(&[1.0, 1.0, 1.0]), None);
+    }
+}

@@ -1,0 +1,288 @@
+//! What grading produces: one result per check, one outcome per task, one report per run.
+//! All of it is serialisable: a worker sends its checks to the grader as JSON, and the
+//! report is stored for `pbrlab tasks` and written for Gradescope.
+
+use super::panics::Panic;
+use super::tolerance::Error;
+use serde::{Deserialize, Serialize};
+
+/// The kinds of check (DESIGN.md §4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CheckKind {
+    /// Fixed and random cases against the reference's outputs.
+    Values,
+    /// Pearson χ² of the student's samples against the reference density.
+    Sampling,
+    /// Student's t-test of an estimator against an analytic value.
+    Estimator,
+    /// Per-pixel z-test of a render against a reference image.
+    Image,
+    /// Extreme inputs: finite, in range, right limit.
+    Stability,
+}
+
+impl CheckKind {
+    /// The kind's name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            CheckKind::Values => "values",
+            CheckKind::Sampling => "sampling",
+            CheckKind::Estimator => "estimator",
+            CheckKind::Image => "image",
+            CheckKind::Stability => "stability",
+        }
+    }
+}
+
+/// Who may see a check's result (Gradescope's `visibility`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Visibility {
+    /// Shown to the student at once.
+    #[default]
+    Visible,
+    /// Shown only to the instructor: the hidden cases of `--hidden-seed`.
+    Hidden,
+}
+
+/// The result of one check of one task.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CheckResult {
+    /// What was checked, e.g. `values` or `sampling: ndf_sample wo=30° α=0.3`.
+    pub name: String,
+    /// The kind of check.
+    pub kind: CheckKind,
+    /// Who may see it.
+    pub visibility: Visibility,
+    /// Whether it passed.
+    pub passed: bool,
+    /// Its share of the task's points, relative to the task's other checks.
+    pub weight: f64,
+    /// One line: what was measured and the verdict.
+    pub summary: String,
+    /// Failing cases, each naming its input (at most [`MAX_MESSAGES`]).
+    pub failures: Vec<String>,
+    /// Number of failing cases (may exceed `failures.len()`).
+    pub failed: usize,
+    /// Number of cases run.
+    pub total: usize,
+    /// The largest error over the cases and the case where it occurred.
+    pub worst: Option<Worst>,
+    /// The declared false-failure rate of a statistical check (0 for exact checks).
+    pub alpha: f64,
+    /// p-values of the statistical sub-tests, for calibration studies.
+    pub p_values: Vec<f64>,
+    /// True when every case stopped at a `todo!()` stub.
+    pub not_attempted: bool,
+    /// The tasks whose `todo!()` stubs stopped cases of this check.
+    pub todo_in: Vec<String>,
+    /// How many failing cases stopped at a `todo!()` stub.
+    pub todo_failed: usize,
+    /// Data for the HTML report.
+    pub detail: Option<Detail>,
+    /// Wall time spent in the check, in seconds.
+    pub seconds: f64,
+}
+
+/// The sum of points or weights, +0 when empty (`Iterator::sum` of no f64 is −0, which
+/// prints as "-0.0").
+pub fn total(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(0.0, |a, b| a + b)
+}
+
+/// The maximum number of failure messages a check keeps.
+pub const MAX_MESSAGES: usize = 8;
+
+impl CheckResult {
+    /// An empty result of `kind` named `name`, to be filled in by a check.
+    pub fn new(name: impl Into<String>, kind: CheckKind) -> Self {
+        Self {
+            name: name.into(),
+            kind,
+            visibility: Visibility::Visible,
+            passed: false,
+            weight: 1.0,
+            summary: String::new(),
+            failures: Vec::new(),
+            failed: 0,
+            total: 0,
+            worst: None,
+            alpha: 0.0,
+            p_values: Vec::new(),
+            not_attempted: false,
+            todo_in: Vec::new(),
+            todo_failed: 0,
+            detail: None,
+            seconds: 0.0,
+        }
+    }
+
+    /// Records one failing case.
+    pub fn fail(&mut self, message: String) {
+        self.failed += 1;
+        if self.failures.len() < MAX_MESSAGES {
+            self.failures.push(message);
+        }
+    }
+
+    /// Records a case that panicked; `context` names the case.
+    pub fn fail_panic(&mut self, context: &str, panic: &Panic) {
+        if let Some(task) = &panic.todo_in {
+            self.todo_failed += 1;
+            if !self.todo_in.contains(task) {
+                self.todo_in.push(task.clone());
+            }
+        }
+        self.fail(format!("{context}: {}", panic.describe()));
+    }
+
+    /// Sets the verdict from the cases recorded: passed when none failed, not attempted when
+    /// every case stopped at a stub.
+    pub fn finish(&mut self) {
+        self.passed = self.failed == 0;
+        self.not_attempted = self.total > 0 && self.todo_failed == self.total;
+    }
+}
+
+/// The worst error of a check and where it happened.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Worst {
+    /// The case, with its input.
+    pub case: String,
+    /// The error there.
+    pub error: Error,
+}
+
+/// Extra data of a check, drawn by the HTML report.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Detail {
+    /// Observed against expected counts of a sampling check.
+    Sampling(super::sampling::Histogram),
+    /// Mean, error and time of an estimator, the student's against the reference's.
+    Estimator(super::estimator::EstimatorStats),
+    /// A render against the reference.
+    Image(super::image_check::ImageDetail),
+}
+
+/// How grading a task ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum TaskStatus {
+    /// Every check passed.
+    Passed,
+    /// At least one check failed.
+    Failed,
+    /// The task is still the shipped `todo!()` stub.
+    NotAttempted,
+    /// The checks stopped at another task's stub (only without the reference, where the
+    /// student's own dependencies are used).
+    NeedsTask {
+        /// The task that must be written first.
+        task: String,
+    },
+    /// The student's code brought the worker process down; the task scores 0.
+    Crashed {
+        /// What happened, in words (timeout, stack overflow, out of memory, …).
+        reason: String,
+    },
+    /// The task has no checks yet (its code arrives with the renderer).
+    NoChecks,
+    /// The grader itself failed on this task (not the student's code); grade again.
+    GraderError {
+        /// What went wrong.
+        message: String,
+    },
+}
+
+impl TaskStatus {
+    /// A short label for tables.
+    pub fn label(&self) -> String {
+        match self {
+            TaskStatus::Passed => "passed".into(),
+            TaskStatus::Failed => "FAILED".into(),
+            TaskStatus::NotAttempted => "not attempted".into(),
+            TaskStatus::NeedsTask { task } => format!("needs {task}"),
+            TaskStatus::Crashed { .. } => "CRASHED".into(),
+            TaskStatus::NoChecks => "no checks yet".into(),
+            TaskStatus::GraderError { .. } => "GRADER ERROR".into(),
+        }
+    }
+}
+
+/// The outcome of grading one task.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TaskOutcome {
+    /// The task id (`reflect`, …).
+    pub task: String,
+    /// How grading ended.
+    pub status: TaskStatus,
+    /// Points scored.
+    pub points: f64,
+    /// Points available (the task table's; 0 for a task without checks).
+    pub max_points: f64,
+    /// Every check that ran.
+    pub checks: Vec<CheckResult>,
+    /// What the student's code printed, truncated.
+    pub output: String,
+    /// Wall time for the task including process start, in seconds.
+    pub seconds: f64,
+}
+
+impl TaskOutcome {
+    /// The worst error over the task's checks, if any check measured one.
+    pub fn worst(&self) -> Option<&Worst> {
+        self.checks
+            .iter()
+            .filter_map(|c| c.worst.as_ref())
+            .max_by(|a, b| a.error.abs.total_cmp(&b.error.abs))
+    }
+}
+
+/// A whole grading run.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GradeReport {
+    /// Which implementation was graded (`student`, `reference`, `mixed`).
+    pub implementation: String,
+    /// The seed of the statistical checks.
+    pub seed: u64,
+    /// Whether hidden cases were added (the hidden seed itself is never recorded).
+    pub hidden: bool,
+    /// One outcome per graded task, in worksheet order.
+    pub tasks: Vec<TaskOutcome>,
+    /// Points scored in total.
+    pub score: f64,
+    /// Points available in total.
+    pub max_score: f64,
+    /// Wall time of the run, in seconds.
+    pub seconds: f64,
+}
+
+impl GradeReport {
+    /// A report of `tasks`, with totals summed.
+    pub fn new(
+        implementation: &str,
+        seed: u64,
+        hidden: bool,
+        tasks: Vec<TaskOutcome>,
+        seconds: f64,
+    ) -> Self {
+        let score = total(tasks.iter().map(|t| t.points));
+        let max_score = total(tasks.iter().map(|t| t.max_points));
+        Self {
+            implementation: implementation.into(),
+            seed,
+            hidden,
+            tasks,
+            score,
+            max_score,
+            seconds,
+        }
+    }
+
+    /// The outcome of `task`, if it was graded.
+    pub fn task(&self, task: &str) -> Option<&TaskOutcome> {
+        self.tasks.iter().find(|t| t.task == task)
+    }
+}

@@ -1,0 +1,198 @@
+//! The child side of isolation: a worker process grades one task and reports back.
+//!
+//! The grader starts a worker (`pbrlab grade-worker`, hidden) per task and writes a [`Job`]
+//! to its stdin. The worker reads the whole job before any student code runs, limits its own
+//! address space, runs the checks, and prints one line `PBRLAB-RESULT <nonce> <json>` on
+//! stdout. The nonce is a fresh random string the student's code never sees (stdin is
+//! drained first), so printing a fake result line or exiting early cannot pass a task: the
+//! grader accepts only a line with its nonce, and treats a worker that exits without one as
+//! having crashed.
+
+use super::checks::{TaskInput, grade_task};
+use super::panics;
+use super::verdict::CheckResult;
+use crate::worksheet::{TaskId, Tasks};
+use anyhow::{Context, anyhow};
+use serde::{Deserialize, Serialize};
+use std::io::{Read, Write};
+
+/// The marker that starts the result line.
+pub const RESULT_MARKER: &str = "PBRLAB-RESULT";
+
+/// The marker of the line a worker prints once it has its job, before any student code
+/// runs: a worker that ends without it failed to start (the grader's fault, not the code's).
+pub const STARTED_MARKER: &str = "PBRLAB-STARTED";
+
+/// Which implementation a worker runs for the graded task.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(tag = "impl", rename_all = "snake_case")]
+pub enum ImplSpec {
+    /// The reference for every task.
+    Reference,
+    /// The student's code for every task.
+    Student,
+    /// The student's code for the listed tasks, the reference for the rest.
+    Mixed {
+        /// Task ids that run the student's code.
+        student: Vec<String>,
+    },
+}
+
+impl ImplSpec {
+    /// The tasks that run the student's code.
+    pub fn student_tasks(&self) -> crate::task_set::TaskSet {
+        match self {
+            ImplSpec::Reference => crate::task_set::TaskSet::EMPTY,
+            ImplSpec::Student => crate::task_set::TaskSet::all(),
+            ImplSpec::Mixed { student } => student
+                .iter()
+                .filter_map(|s| TaskId::parse(s).ok())
+                .collect(),
+        }
+    }
+}
+
+/// What a worker is asked to do.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "job", rename_all = "snake_case")]
+pub enum JobKind {
+    /// Run every check of a task.
+    Grade {
+        /// The task id.
+        task: String,
+        /// Its expected data, hidden cases and seed.
+        input: TaskInput,
+    },
+    /// Only tell whether the student has written the task.
+    Probe {
+        /// The task id.
+        task: String,
+    },
+}
+
+/// A job for a worker process.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Job {
+    /// The string the result line must carry.
+    pub nonce: String,
+    /// The implementation to grade.
+    pub implementation: ImplSpec,
+    /// The job.
+    pub kind: JobKind,
+    /// Address-space limit in bytes (0: none).
+    pub memory_limit: u64,
+}
+
+/// What a worker sends back.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "record", rename_all = "snake_case")]
+pub enum Record {
+    /// The checks of a graded task.
+    Checks {
+        /// Every check that ran.
+        checks: Vec<CheckResult>,
+    },
+    /// The answer to a probe.
+    Attempted {
+        /// True unless the task still stops at its `todo!()`.
+        attempted: bool,
+    },
+    /// The worker could not run the job (not the student's fault).
+    Error {
+        /// What went wrong.
+        message: String,
+    },
+}
+
+/// Runs a job on the implementation `t`.
+pub fn run_job<T: Tasks>(t: &T, kind: &JobKind) -> Record {
+    let task_of = |name: &str| TaskId::parse(name).map_err(|e| anyhow!(e));
+    let result = match kind {
+        JobKind::Grade { task, input } => task_of(task).map(|task| Record::Checks {
+            checks: grade_task(t, task, input),
+        }),
+        JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
+            attempted: match panics::catch(|| super::probe::probe_task(t, task)) {
+                Ok(()) => true,
+                Err(p) => !p.is_todo_of(task),
+            },
+        }),
+    };
+    result.unwrap_or_else(|e| Record::Error {
+        message: format!("{e:#}"),
+    })
+}
+
+/// Limits this process's address space to `bytes`, so a runaway allocation fails instead of
+/// exhausting the machine.
+pub fn limit_memory(bytes: u64) -> anyhow::Result<()> {
+    #[cfg(unix)]
+    if bytes > 0 {
+        let limit = libc::rlimit {
+            rlim_cur: bytes as libc::rlim_t,
+            rlim_max: bytes as libc::rlim_t,
+        };
+        // SAFETY: setrlimit reads a valid, initialised rlimit struct.
+        if unsafe { libc::setrlimit(libc::RLIMIT_AS, &limit) } != 0 {
+            return Err(std::io::Error::last_os_error()).context("setrlimit(RLIMIT_AS)");
+        }
+    }
+    #[cfg(not(unix))]
+    let _ = bytes;
+    Ok(())
+}
+
+/// The worker's main loop: reads the job from stdin, builds the implementation with `make`,
+/// runs the job and prints the result line. Never returns: the process exits right after
+/// the result line, so nothing the student left running can print after it.
+pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
+    let mut text = String::new();
+    let job: Result<Job, String> = std::io::stdin()
+        .read_to_string(&mut text)
+        .map_err(|e| e.to_string())
+        .and_then(|_| serde_json::from_str(&text).map_err(|e| e.to_string()));
+    let job = match job {
+        Ok(job) => job,
+        Err(e) => {
+            eprintln!("grade-worker: cannot read the job on stdin: {e}");
+            std::process::exit(2);
+        }
+    };
+    {
+        let mut out = std::io::stdout().lock();
+        let _ = writeln!(out, "\n{STARTED_MARKER} {}", job.nonce);
+        let _ = out.flush();
+    }
+    let record = match limit_memory(job.memory_limit).and_then(|()| make(&job.implementation)) {
+        Ok(t) => run_job(&t, &job.kind),
+        Err(e) => Record::Error {
+            message: format!("{e:#}"),
+        },
+    };
+    let line = serde_json::to_string(&record).unwrap_or_else(|e| {
+        serde_json::to_string(&Record::Error {
+            message: format!("unserialisable result: {e}"),
+        })
+        .unwrap_or_default()
+    });
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(out, "\n{RESULT_MARKER} {} {line}", job.nonce);
+    let _ = out.flush();
+    std::process::exit(0);
+}
+
+/// The implementation a production worker grades: `Mixed` over the reference when the
+/// solutions are compiled in, otherwise the student's code alone.
+pub fn production_impl(spec: &ImplSpec) -> anyhow::Result<impl Tasks + use<>> {
+    #[cfg(feature = "solutions")]
+    {
+        Ok(crate::implementation::Mixed::new(spec.student_tasks()))
+    }
+    #[cfg(not(feature = "solutions"))]
+    match spec {
+        ImplSpec::Student => Ok(crate::implementation::Student),
+        other => Err(anyhow!(
+            "{other:?} needs the reference, which this build does not have (feature `solutions`)"
+        )),
+    }
+}

@@ -1,0 +1,235 @@
+//! Which files of the instructor repository go into the student handout, and how
+//! Cargo.toml changes there.
+//!
+//! Left out: `solutions/`, build output and local state, instructor tests (files named
+//! `instructor_*`, and any test or bench that uses the reference: it would not build
+//! without it, and may contain correct code), support folders only those tests use, and
+//! insta snapshots of tests that are left out. The grader's expected data
+//! (`tests/snapshots/expected/`) stays: it holds the public cases only, which is what lets
+//! the handout grade without solutions.
+
+use anyhow::{Context, bail};
+use std::path::{Path, PathBuf};
+
+/// Top-level entries copied into the handout (when present).
+const TOP_LEVEL: &[&str] = &[
+    "Cargo.toml",
+    "Cargo.lock",
+    "build.rs",
+    "src",
+    "exercises",
+    "tests",
+    "scenes",
+    "benches",
+    ".ci",
+    ".gitignore",
+    "rust-toolchain.toml",
+    "LICENSE-MIT",
+    "LICENSE-APACHE",
+];
+
+/// The files of the handout, relative to the repository root, and its Cargo.toml.
+#[derive(Clone, Debug)]
+pub struct Manifest {
+    /// Files copied unchanged.
+    pub files: Vec<PathBuf>,
+    /// The handout's Cargo.toml.
+    pub cargo_toml: String,
+}
+
+/// True when a test or bench source needs the reference solutions to build, or is about
+/// them: it names the reference, the mix, or the feature.
+pub fn needs_solutions(source: &str) -> bool {
+    source
+        .lines()
+        .map(str::trim_start)
+        .filter(|l| !l.starts_with("//"))
+        .any(|l| {
+            l.contains("feature = \"solutions\"")
+                || l.contains("pbrlab::solutions")
+                || l.contains("Reference")
+                || l.contains("Mixed")
+        })
+}
+
+fn files_under(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) -> anyhow::Result<()> {
+    let full = root.join(dir);
+    let mut entries: Vec<_> = std::fs::read_dir(&full)
+        .with_context(|| format!("reading {}", full.display()))?
+        .collect::<Result<_, _>>()?;
+    entries.sort_by_key(|e| e.file_name());
+    for entry in entries {
+        let rel = dir.join(entry.file_name());
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if name.ends_with(".snap.new") || name.ends_with(".pending-snap") || name.ends_with('~') {
+            continue;
+        }
+        if entry.file_type()?.is_dir() {
+            files_under(root, &rel, out)?;
+        } else {
+            out.push(rel);
+        }
+    }
+    Ok(())
+}
+
+/// Applies the rules for `tests/` to the candidate files under it.
+fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<PathBuf>> {
+    let tests = Path::new("tests");
+    let mut kept_targets = Vec::new();
+    for file in &candidates {
+        if file.parent() == Some(tests) && file.extension().is_some_and(|e| e == "rs") {
+            let stem = file
+                .file_stem()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned();
+            let text = std::fs::read_to_string(root.join(file))?;
+            if !stem.starts_with("instructor_") && !needs_solutions(&text) {
+                kept_targets.push((stem, text));
+            }
+        }
+    }
+    let uses_module = |module: &str| {
+        kept_targets
+            .iter()
+            .any(|(_, text)| text.contains(&format!("mod {module};")))
+    };
+    Ok(candidates
+        .into_iter()
+        .filter(|file| {
+            let Ok(rel) = file.strip_prefix(tests) else {
+                return false;
+            };
+            let mut parts = rel
+                .components()
+                .map(|c| c.as_os_str().to_string_lossy().into_owned());
+            let first = parts.next().unwrap_or_default();
+            match parts.next() {
+                None => kept_targets
+                    .iter()
+                    .any(|(stem, _)| format!("{stem}.rs") == first),
+                Some(second) if first == "snapshots" => {
+                    second == "expected"
+                        || kept_targets
+                            .iter()
+                            .any(|(stem, _)| second.starts_with(&format!("{stem}__")))
+                }
+                Some(_) => !first.starts_with("instructor_") && uses_module(&first),
+            }
+        })
+        .collect())
+}
+
+/// The handout's Cargo.toml: no default features (so no solutions), and no bench or test
+/// target whose file is left out.
+fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
+    let mut out = String::new();
+    let mut section_header = String::new();
+    let mut section = String::new();
+    let mut default_rewritten = false;
+    let flush = |header: &str, body: &str, out: &mut String| {
+        let is_target = header.starts_with("[[bench]]") || header.starts_with("[[test]]");
+        if is_target {
+            let value = |key: &str| {
+                body.lines().find_map(|l| {
+                    let (k, v) = l.split_once('=')?;
+                    (k.trim() == key).then(|| v.trim().trim_matches('"').to_string())
+                })
+            };
+            let dir = if header.starts_with("[[bench]]") {
+                "benches"
+            } else {
+                "tests"
+            };
+            let path = value("path").or_else(|| value("name").map(|n| format!("{dir}/{n}.rs")));
+            if let Some(path) = path
+                && !kept.iter().any(|k| k == Path::new(&path))
+            {
+                return;
+            }
+        }
+        out.push_str(header);
+        out.push_str(body);
+    };
+    for line in text.split_inclusive('\n') {
+        if line.starts_with('[') {
+            flush(&section_header, &section, &mut out);
+            section_header = line.to_string();
+            section.clear();
+        } else if section_header.trim() == "[features]" && line.trim_start().starts_with("default")
+        {
+            section.push_str("default = []\n");
+            default_rewritten = true;
+        } else {
+            section.push_str(line);
+        }
+    }
+    flush(&section_header, &section, &mut out);
+    if !default_rewritten {
+        bail!("Cargo.toml has no `default` feature list to rewrite");
+    }
+    Ok(out)
+}
+
+/// Selects the handout's files from the repository at `root`.
+pub fn select(root: &Path) -> anyhow::Result<Manifest> {
+    let mut files = Vec::new();
+    for entry in TOP_LEVEL {
+        let path = root.join(entry);
+        if path.is_dir() {
+            files_under(root, Path::new(entry), &mut files)?;
+        } else if path.is_file() && *entry != "Cargo.toml" {
+            files.push(PathBuf::from(entry));
+        }
+    }
+    let (tests, mut rest): (Vec<_>, Vec<_>) =
+        files.into_iter().partition(|f| f.starts_with("tests"));
+    let mut kept_benches = Vec::new();
+    rest.retain(|f| {
+        if f.starts_with("benches") && f.extension().is_some_and(|e| e == "rs") {
+            let keep = std::fs::read_to_string(root.join(f)).is_ok_and(|t| !needs_solutions(&t));
+            if keep {
+                kept_benches.push(f.clone());
+            }
+            keep
+        } else {
+            true
+        }
+    });
+    rest.extend(select_tests(root, tests)?);
+    rest.sort();
+    let cargo_path = root.join("Cargo.toml");
+    let cargo = std::fs::read_to_string(&cargo_path)
+        .with_context(|| format!("reading {}", cargo_path.display()))?;
+    let cargo_toml = rewrite_cargo_toml(&cargo, &rest).context("Cargo.toml")?;
+    Ok(Manifest {
+        files: rest,
+        cargo_toml,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cargo_toml_loses_default_features_and_dropped_targets() {
+        let text = "[package]\nname = \"x\"\n\n[features]\ndefault = [\"solutions\"]\nsolutions = []\n\n[[bench]]\nname = \"tasks\"\nharness = false\n\n[[bench]]\nname = \"render\"\nharness = false\n";
+        let out = rewrite_cargo_toml(text, &[PathBuf::from("benches/render.rs")]).unwrap();
+        assert!(out.contains("default = []\nsolutions = []"), "{out}");
+        assert!(!out.contains("\"tasks\""), "{out}");
+        assert!(out.contains("name = \"render\""), "{out}");
+    }
+
+    #[test]
+    fn sources_that_use_the_reference_are_recognised() {
+        assert!(needs_solutions(
+            "use pbrlab::implementation::{Mixed, Reference};"
+        ));
+        assert!(needs_solutions("#![cfg(feature = \"solutions\")]"));
+        assert!(!needs_solutions(
+            "// compares with the Reference\nuse pbrlab::grade;"
+        ));
+    }
+}

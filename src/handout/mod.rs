@@ -1,0 +1,53 @@
+//! `pbrlab handout DIR`: the student repository.
+//!
+//! The handout is this repository without the solutions and without anything that
+//! reveals them ([`manifest`] decides what goes in), with its own README (the student
+//! workflow) and a Cargo.toml whose default features leave the solutions out. It builds,
+//! renders what the student has written, and grades the public cases from the stored
+//! expected data.
+
+pub mod manifest;
+
+use crate::grade::history::write_atomic;
+use anyhow::{Context, bail};
+use std::path::{Path, PathBuf};
+
+/// The handout's README: the student workflow.
+pub const README: &str = include_str!("README.md");
+
+/// Writes the handout of the repository at `root` into `dest`, which must not exist or be
+/// empty. Returns the files written, relative to `dest`.
+pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    if dest.exists()
+        && std::fs::read_dir(dest)
+            .map(|mut d| d.next().is_some())
+            .unwrap_or(true)
+    {
+        bail!("{} exists and is not empty", dest.display());
+    }
+    let root_abs = root
+        .canonicalize()
+        .with_context(|| format!("reading {}", root.display()))?;
+    std::fs::create_dir_all(dest).with_context(|| format!("creating {}", dest.display()))?;
+    let dest_abs = dest.canonicalize()?;
+    let manifest = manifest::select(&root_abs)?;
+    let mut written = Vec::new();
+    for file in &manifest.files {
+        let from = root_abs.join(file);
+        if from.starts_with(&dest_abs) {
+            continue;
+        }
+        let to = dest_abs.join(file);
+        if let Some(dir) = to.parent() {
+            std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+        }
+        std::fs::copy(&from, &to).with_context(|| format!("copying {}", file.display()))?;
+        written.push(file.clone());
+    }
+    write_atomic(&dest_abs.join("Cargo.toml"), manifest.cargo_toml.as_bytes())?;
+    write_atomic(&dest_abs.join("README.md"), README.as_bytes())?;
+    written.push("Cargo.toml".into());
+    written.push("README.md".into());
+    written.sort();
+    Ok(written)
+}

@@ -1,0 +1,59 @@
+//! False failures: the reference graded with fresh seeds fails no task more often than the
+//! task declares, and the p-values of the statistical sub-tests are uniform (so the
+//! declared rates are the real ones).
+#![cfg(feature = "solutions")]
+
+use pbrlab::grade::calibration::repeat;
+use pbrlab::grade::isolation::Launcher;
+use pbrlab::grade::runner::GradeOptions;
+use pbrlab::implementation::ImplChoice;
+
+const RUNS: usize = 200;
+
+#[test]
+#[ignore = "slow: grades the reference 200 times (about 90 s on two cores)"]
+fn the_reference_fails_no_more_often_than_declared() {
+    let launcher = Launcher {
+        program: env!("CARGO_BIN_EXE_pbrlab").into(),
+        args: vec!["grade-worker".into()],
+        env: Vec::new(),
+    };
+    let options = GradeOptions {
+        implementation: ImplChoice::Reference,
+        seed: 10_000,
+        ..GradeOptions::default()
+    };
+    let calibration = repeat(&options, &launcher, RUNS).expect("grading runs");
+    println!("{}", calibration.text());
+    let excessive = calibration.excessive(1e-3);
+    assert!(
+        excessive.is_empty(),
+        "{}",
+        excessive
+            .iter()
+            .map(|t| format!(
+                "{}: {} failures\n{}",
+                t.task,
+                t.failures,
+                t.example.as_deref().unwrap_or("")
+            ))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+    // Uniform p-values: the share below 5 % (and 1 %) within 4 standard deviations.
+    let p: Vec<f64> = calibration
+        .tasks
+        .iter()
+        .flat_map(|t| t.p_values.iter().copied())
+        .collect();
+    assert!(p.len() >= RUNS * 8, "{} p-values", p.len());
+    for level in [0.05, 0.01] {
+        let share = p.iter().filter(|&&x| x < level).count() as f64 / p.len() as f64;
+        let sd = (level * (1.0 - level) / p.len() as f64).sqrt();
+        assert!(
+            (share - level).abs() < 4.0 * sd,
+            "{:.2} % of p-values below {level}",
+            100.0 * share
+        );
+    }
+}

@@ -1,0 +1,128 @@
+//! `pbrlab grade` end to end through the real binary: the shipped stubs grade to zero with
+//! every task "not attempted", the reference to full marks in every report format, and the
+//! last grade feeds `pbrlab tasks`.
+#![cfg(feature = "solutions")]
+
+use pbrlab::grade::verdict::{GradeReport, TaskStatus};
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn pbrlab(state: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+        .args(args)
+        .env("PBRLAB_STATE_DIR", state)
+        .output()
+        .expect("pbrlab runs")
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn the_stubs_grade_to_zero_and_tasks_shows_it() {
+    let state = tempfile::tempdir().unwrap();
+    let out = pbrlab(state.path(), &["grade", "--format", "json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: GradeReport = serde_json::from_str(&stdout(&out)).expect("a JSON report");
+    assert_eq!(report.score, 0.0);
+    assert!(report.max_score > 0.0);
+    for t in report.tasks.iter().filter(|t| t.max_points > 0.0) {
+        assert_eq!(t.status, TaskStatus::NotAttempted, "{}", t.task);
+    }
+    let tasks = stdout(&pbrlab(state.path(), &["tasks"]));
+    assert!(tasks.contains("not attempted (0.0/5)"), "{tasks}");
+    assert!(tasks.contains("Last grade: 0.0/"), "{tasks}");
+}
+
+#[test]
+fn the_reference_scores_full_marks_in_every_format() {
+    let state = tempfile::tempdir().unwrap();
+    let results = state.path().join("results.json");
+    let html = state.path().join("html");
+    let out = pbrlab(
+        state.path(),
+        &[
+            "grade",
+            "--impl",
+            "reference",
+            "--format",
+            "gradescope",
+            "--hidden-seed",
+            "99",
+            "-o",
+            results.to_str().unwrap(),
+            "--html",
+            html.to_str().unwrap(),
+        ],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&results).unwrap()).unwrap();
+    let tests = json["tests"].as_array().expect("tests[]");
+    let score = json["score"].as_f64().unwrap();
+    assert!(
+        score > 0.0 && score == json["max_score"].as_f64().unwrap(),
+        "{json}"
+    );
+    let sum: f64 = tests.iter().map(|t| t["score"].as_f64().unwrap()).sum();
+    assert!((sum - score).abs() < 1e-9);
+    assert!(tests.iter().all(|t| t["status"] == "passed"), "{json}");
+    let hidden = tests.iter().filter(|t| t["visibility"] == "hidden").count();
+    let visible = tests
+        .iter()
+        .filter(|t| t["visibility"] == "visible")
+        .count();
+    assert!(
+        hidden > 0 && hidden < visible,
+        "{hidden} hidden, {visible} visible"
+    );
+    let page = std::fs::read_to_string(html.join("index.html")).unwrap();
+    assert!(
+        page.contains("<svg") && page.contains("cosine_sample"),
+        "no histograms"
+    );
+    // A reference grade is not a student's progress.
+    assert!(!state.path().join("last-grade.json").exists());
+}
+
+#[test]
+fn text_report_has_a_row_per_task_and_a_total() {
+    let state = tempfile::tempdir().unwrap();
+    let out = pbrlab(
+        state.path(),
+        &["grade", "--impl", "reference", "smith", "reflect"],
+    );
+    let text = stdout(&out);
+    assert!(out.status.success());
+    assert!(
+        text.contains("smith_g1") && text.contains("passed") && text.contains("6.0/6"),
+        "{text}"
+    );
+    assert!(
+        text.lines()
+            .any(|l| l.starts_with("total") && l.contains("11.0/11")),
+        "{text}"
+    );
+    assert!(!text.contains("cook_torrance"));
+}
+
+#[test]
+fn an_unknown_task_is_an_error_that_lists_the_tasks() {
+    let state = tempfile::tempdir().unwrap();
+    let out = pbrlab(state.path(), &["grade", "no_such_task"]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("no task `no_such_task`") && err.contains("fresnel_schlick"),
+        "{err}"
+    );
+}

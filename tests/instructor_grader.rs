@@ -1,0 +1,206 @@
+//! The grader grades itself: the reference scores full marks, the shipped stubs score zero,
+//! every known-wrong implementation fails its own task and only that task, and every correct
+//! but different implementation passes. In-process (isolation is tested in
+//! instructor_isolation.rs). Not part of the student handout: it contains correct code.
+#![cfg(feature = "solutions")]
+
+mod instructor_support;
+
+use instructor_support::{different, grade, graded_tasks, inputs, messages, wrong};
+use pbrlab::grade::runner::student_tasks_for;
+use pbrlab::grade::verdict::TaskStatus;
+use pbrlab::implementation::{ImplChoice, Reference, Student};
+use pbrlab::worksheet::TaskId;
+
+#[test]
+fn every_task_in_the_trait_has_checks() {
+    let inputs = inputs(1);
+    let graded = graded_tasks(&inputs);
+    for task in TaskId::ALL {
+        let in_trait = !pbrlab::worksheet::task_functions(task).is_empty();
+        assert_eq!(graded.contains(&task), in_trait, "{task}");
+    }
+}
+
+#[test]
+fn the_reference_scores_full_marks() {
+    let inputs = inputs(1);
+    for task in graded_tasks(&inputs) {
+        let (status, points, checks) = grade(&Reference, task, &inputs[&task]);
+        assert_eq!(status, TaskStatus::Passed, "{task}:\n{}", messages(&checks));
+        assert_eq!(points, task.info().points as f64);
+    }
+}
+
+#[test]
+fn the_shipped_stubs_score_zero_as_not_attempted() {
+    let inputs = inputs(1);
+    for task in graded_tasks(&inputs) {
+        let (status, points, checks) = grade(&Student, task, &inputs[&task]);
+        assert_eq!(
+            status,
+            TaskStatus::NotAttempted,
+            "{task}:\n{}",
+            messages(&checks)
+        );
+        assert_eq!(points, 0.0);
+    }
+}
+
+/// The tasks that call `task` through the implementation (directly or through others).
+fn dependents(task: TaskId) -> Vec<TaskId> {
+    TaskId::ALL
+        .into_iter()
+        .filter(|t| *t != task && depends_on(*t, task))
+        .collect()
+}
+
+fn depends_on(t: TaskId, on: TaskId) -> bool {
+    t.info()
+        .needs
+        .iter()
+        .any(|n| *n == on || depends_on(*n, on))
+}
+
+/// Each wrong implementation fails its task, and the tasks built on it still pass when
+/// graded the way the grader grades them (`student_tasks_for`): the mistake is charged once.
+/// Tasks that do not call it run the reference only, which `the_reference_scores_full_marks`
+/// covers.
+#[test]
+fn every_wrong_implementation_fails_its_own_task_and_only_it() {
+    let inputs = inputs(1);
+    let mut report = Vec::new();
+    for w in wrong::catalogue() {
+        for task in std::iter::once(w.task).chain(dependents(w.task)) {
+            let student = student_tasks_for(task, ImplChoice::Student, &[]);
+            let (status, points, checks) = grade(&w.patch.only(student), task, &inputs[&task]);
+            if task == w.task {
+                if status == TaskStatus::Passed || points >= task.info().points as f64 {
+                    report.push(format!("{task}: `{}` was not caught", w.name));
+                }
+                let text = messages(&checks);
+                assert!(
+                    !text.is_empty() && !text.contains("todo!()"),
+                    "{}: {text}",
+                    w.name
+                );
+            } else if status != TaskStatus::Passed {
+                report.push(format!(
+                    "{task}: `{}` (of {}) failed it:\n{}",
+                    w.name,
+                    w.task,
+                    messages(&checks)
+                ));
+            }
+        }
+    }
+    assert!(report.is_empty(), "{}", report.join("\n"));
+}
+
+#[test]
+fn every_correct_but_different_implementation_passes() {
+    let inputs = inputs(1);
+    let mut report = Vec::new();
+    for d in different::catalogue() {
+        let (status, _, checks) = grade(&d.patch, d.task, &inputs[&d.task]);
+        if status != TaskStatus::Passed {
+            report.push(format!(
+                "{}: `{}` failed:\n{}",
+                d.task,
+                d.name,
+                messages(&checks)
+            ));
+        }
+    }
+    assert!(report.is_empty(), "{}", report.join("\n"));
+}
+
+#[test]
+fn a_wrong_dependency_is_blamed_on_its_own_task() {
+    let inputs = inputs(1);
+    let wrong_g1 = wrong::catalogue()
+        .into_iter()
+        .find(|w| w.name == "Λ without the 1/2")
+        .expect("a wrong smith_g1");
+    let ct = TaskId::CookTorrance;
+    // Graded alone, cook_torrance runs on the reference smith_g1 and passes.
+    let alone = wrong_g1
+        .patch
+        .only(student_tasks_for(ct, ImplChoice::Student, &[]));
+    assert_eq!(grade(&alone, ct, &inputs[&ct]).0, TaskStatus::Passed);
+    // With the student's smith_g1 behind it (`--impl mixed`), it fails too.
+    let both = student_tasks_for(ct, ImplChoice::Mixed, &[ct, TaskId::SmithG1]);
+    assert_eq!(
+        grade(&wrong_g1.patch.only(both), ct, &inputs[&ct]).0,
+        TaskStatus::Failed
+    );
+}
+
+#[test]
+fn failure_messages_name_the_case_input_and_cause() {
+    let inputs = inputs(1);
+    let task = TaskId::FresnelSchlick;
+    let w = wrong::catalogue()
+        .into_iter()
+        .find(|w| w.name.contains("cos θi from dense"))
+        .expect("the wrong-cosine Schlick");
+    let (_, _, checks) = grade(&w.patch, task, &inputs[&task]);
+    let text = messages(&checks);
+    assert!(
+        text.contains("fresnel_schlick(cos=0.766, 1.5→1): got 0.04067, expected 0.2456 (dense→less dense: use cos θt)"),
+        "{text}"
+    );
+    let factor_4 = wrong::catalogue()
+        .into_iter()
+        .find(|w| w.name == "missing factor 4")
+        .expect("factor 4")
+        .patch;
+    let (_, _, checks) = grade(
+        &factor_4,
+        TaskId::CookTorrance,
+        &inputs[&TaskId::CookTorrance],
+    );
+    assert!(
+        messages(&checks).contains("every failing value is 4 ×"),
+        "{}",
+        messages(&checks)
+    );
+}
+
+#[test]
+fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() {
+    use pbrlab::grade::catalogue::{evaluate, hidden_inputs, public_inputs};
+    let task = TaskId::FresnelSchlick;
+    let public = public_inputs(task);
+    let hidden = hidden_inputs(task, 1234);
+    assert_eq!(
+        hidden,
+        hidden_inputs(task, 1234),
+        "a seed gives the same cases"
+    );
+    assert_ne!(hidden, hidden_inputs(task, 1235));
+    assert!(
+        hidden
+            .iter()
+            .all(|h| public.iter().all(|p| p.call != h.call))
+    );
+    let mut input = inputs(1).remove(&task).unwrap();
+    input.hidden = evaluate(&hidden, &Reference).unwrap();
+    let (status, _, checks) = grade(&Reference, task, &input);
+    assert_eq!(status, TaskStatus::Passed);
+    assert!(
+        checks
+            .iter()
+            .any(|c| c.visibility == pbrlab::grade::verdict::Visibility::Hidden)
+    );
+    let w = wrong::catalogue()
+        .into_iter()
+        .find(|w| w.task == task)
+        .unwrap();
+    let (_, _, checks) = grade(&w.patch, task, &input);
+    let hidden_check = checks
+        .iter()
+        .find(|c| c.visibility == pbrlab::grade::verdict::Visibility::Hidden)
+        .unwrap();
+    assert!(!hidden_check.passed);
+}

@@ -1,0 +1,52 @@
+//! Implementations for grading the grader: the reference with functions replaced.
+#![allow(dead_code)]
+
+pub mod different;
+pub mod patch;
+pub mod wrong;
+pub mod wrong_integrators;
+
+use pbrlab::grade::checks::{TaskInput, grade_task, score};
+use pbrlab::grade::runner::{GradeOptions, prepare};
+use pbrlab::grade::verdict::{CheckResult, TaskStatus};
+use pbrlab::worksheet::{TaskId, Tasks};
+use std::collections::BTreeMap;
+
+/// The inputs of every task (stored data, no hidden cases) for statistical seed `seed`.
+pub fn inputs(seed: u64) -> BTreeMap<TaskId, TaskInput> {
+    prepare(&GradeOptions {
+        seed,
+        ..GradeOptions::default()
+    })
+    .expect("stored expected data loads")
+}
+
+/// Grades `task` in this process.
+pub fn grade(
+    t: &impl Tasks,
+    task: TaskId,
+    input: &TaskInput,
+) -> (TaskStatus, f64, Vec<CheckResult>) {
+    let checks = grade_task(t, task, input);
+    let (status, points) = score(task, &checks);
+    (status, points, checks)
+}
+
+/// Tasks that have checks.
+pub fn graded_tasks(inputs: &BTreeMap<TaskId, TaskInput>) -> Vec<TaskId> {
+    inputs
+        .iter()
+        .filter(|(task, input)| pbrlab::grade::runner::task_has_checks(**task, input))
+        .map(|(task, _)| *task)
+        .collect()
+}
+
+/// The failure messages of `checks`, one per line.
+pub fn messages(checks: &[CheckResult]) -> String {
+    checks
+        .iter()
+        .filter(|c| !c.passed)
+        .map(|c| format!("{}: {} {:?}", c.name, c.summary, c.failures))
+        .collect::<Vec<_>>()
+        .join("\n")
+}

@@ -1,0 +1,325 @@
+//! Known-wrong `path_trace`, `mis` and `delta_tracking`: the worksheet's three code bugs as
+//! the errata demonstrate them, and the usual slips (roulette without dividing by q).
+
+use super::patch::Patch;
+use super::wrong::Wrong;
+use glam::Vec3;
+use pbrlab::bsdf::Bsdf;
+use pbrlab::geometry::{Hit, Ray};
+use pbrlab::integrator::{Bounce, DirectLight, Heuristic, Segment};
+use pbrlab::light::LightSample;
+use pbrlab::medium::{FreeFlight, Medium};
+use pbrlab::sampling::Sampler;
+use pbrlab::scene::Scene;
+use pbrlab::worksheet::{TaskId, Tasks};
+
+/// How a `path_trace` variant goes wrong.
+#[derive(Clone, Copy, PartialEq)]
+enum PathFlaw {
+    /// The sheet: the recursion never adds emission or direct light after the camera hit.
+    NoLightAfterCamera,
+    /// Russian roulette that forgets to divide by the survival probability.
+    RouletteWithoutDivision,
+    /// Emission added again where `mis` already counted it.
+    EmissionTwice,
+}
+
+fn path_variant(
+    t: &Patch,
+    scene: &Scene,
+    segment: &Segment,
+    depth: i32,
+    sampler: &mut Sampler,
+    flaw: PathFlaw,
+) -> Vec3 {
+    if depth <= 0 {
+        return Vec3::ZERO;
+    }
+    let counted = segment.emission_counted && flaw != PathFlaw::EmissionTwice;
+    let Some(hit) = &segment.hit else {
+        return if counted {
+            Vec3::ZERO
+        } else {
+            scene.environment(segment.ray.dir)
+        };
+    };
+    let wo = -segment.ray.dir;
+    let mut radiance = if counted {
+        Vec3::ZERO
+    } else {
+        scene.emitted(hit, wo)
+    };
+    if depth == 1 {
+        return radiance;
+    }
+    let direct = t.mis(scene, hit, wo, scene.heuristic(), sampler);
+    if flaw != PathFlaw::NoLightAfterCamera {
+        radiance += direct.radiance;
+    }
+    let Some(bounce) = direct.bounce else {
+        return radiance;
+    };
+    if depth == 2 {
+        return radiance;
+    }
+    let mut weight = bounce.weight;
+    if scene.settings().roulette_applies(depth) {
+        let q = weight.max_element().min(0.95);
+        if q <= 0.0 || sampler.next_1d() >= q {
+            return radiance;
+        }
+        if flaw != PathFlaw::RouletteWithoutDivision {
+            weight /= q;
+        }
+    }
+    let further = t.path_trace(scene, &bounce.segment, depth - 1, sampler);
+    radiance
+        + weight
+            * if flaw == PathFlaw::NoLightAfterCamera {
+                Vec3::ZERO
+            } else {
+                further
+            }
+}
+
+/// How an `mis` variant goes wrong.
+#[derive(Clone, Copy, PartialEq)]
+enum MisFlaw {
+    /// `G = cos θ / d²`: the cosine at the light is missing from the area-to-solid-angle
+    /// conversion of the light sample.
+    MissingLightCosine,
+    /// The shadow test never finds an occluder (the sheet's inverted comparison).
+    NoShadows,
+    /// Both weights use the light's pdf per unit area next to the BSDF's per solid angle
+    /// (reading I1: unbiased, but the variance depends on the unit of length).
+    MixedMeasures,
+}
+
+fn ratio(heuristic: Heuristic, from_light: bool, a: f32, b: f32) -> f32 {
+    let r = |a: f32, b: f32| if a + b > 0.0 { a / (a + b) } else { 0.0 };
+    match heuristic {
+        Heuristic::Bsdf => (!from_light) as u8 as f32,
+        Heuristic::Light => from_light as u8 as f32,
+        Heuristic::Balance => r(a, b),
+        Heuristic::Power => r(a * a, b * b),
+    }
+}
+
+fn mis_variant(
+    t: &Patch,
+    scene: &Scene,
+    hit: &Hit,
+    wo: Vec3,
+    heuristic: Heuristic,
+    sampler: &mut Sampler,
+    flaw: MisFlaw,
+) -> DirectLight {
+    let bsdf = scene.bsdf(hit);
+    let mut radiance = Vec3::ZERO;
+    if !bsdf.is_delta()
+        && let Some(LightSample::Area {
+            p,
+            n,
+            radiance: le,
+            pdf_area,
+        }) = scene.sample_light(hit.p, sampler)
+    {
+        radiance += light_sample(
+            t,
+            scene,
+            hit,
+            &bsdf,
+            wo,
+            heuristic,
+            (p, n, le, pdf_area),
+            flaw,
+        );
+    }
+    let Some(s) = bsdf.sample(t, wo, sampler) else {
+        return DirectLight {
+            radiance,
+            bounce: None,
+        };
+    };
+    let ray = hit.spawn(s.wi);
+    let next = scene.intersect(&ray);
+    if let Some(h) = &next {
+        let le = scene.emitted(h, -s.wi);
+        let cos_l = h.n.dot(s.wi).abs();
+        if le != Vec3::ZERO && cos_l > 0.0 {
+            let pdf_light = match flaw {
+                MisFlaw::MixedMeasures => scene.light_pdf(h),
+                _ => scene.light_pdf(h) * h.t * h.t / cos_l,
+            };
+            radiance += s.weight * le * ratio(heuristic, false, s.pdf, pdf_light);
+        }
+    }
+    DirectLight {
+        radiance,
+        bounce: Some(Bounce {
+            weight: s.weight,
+            segment: Segment {
+                ray,
+                hit: next,
+                emission_counted: true,
+            },
+        }),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn light_sample(
+    t: &Patch,
+    scene: &Scene,
+    hit: &Hit,
+    bsdf: &Bsdf<'_>,
+    wo: Vec3,
+    heuristic: Heuristic,
+    light: (Vec3, Vec3, Vec3, f32),
+    flaw: MisFlaw,
+) -> Vec3 {
+    let (p, n, le, pdf_area) = light;
+    if heuristic == Heuristic::Bsdf {
+        return Vec3::ZERO;
+    }
+    let d = p - hit.p;
+    let dist2 = d.length_squared();
+    let wi = d / dist2.sqrt();
+    let cos_l = -n.dot(wi);
+    if cos_l <= 0.0 {
+        return Vec3::ZERO;
+    }
+    let f = bsdf.eval(t, wo, wi);
+    let (ray, t_max) = hit.spawn_to(p);
+    if flaw != MisFlaw::NoShadows && scene.occluded(&ray, t_max) {
+        return Vec3::ZERO;
+    }
+    let pdf_light = match flaw {
+        MisFlaw::MissingLightCosine => pdf_area * dist2,
+        _ => pdf_area * dist2 / cos_l,
+    };
+    let pdf_in_weight = if flaw == MisFlaw::MixedMeasures {
+        pdf_area
+    } else {
+        pdf_light
+    };
+    f * le * (ratio(heuristic, true, pdf_in_weight, bsdf.pdf(t, wo, wi)) / pdf_light)
+}
+
+/// How a `delta_tracking` variant goes wrong.
+#[derive(Clone, Copy, PartialEq)]
+enum TrackingFlaw {
+    /// The sheet: two random numbers drawn once and reused at every step.
+    ReusedRandomNumbers,
+    /// An escape returned as an absorption at the end of the segment.
+    EscapeAsAbsorption,
+    /// Every tentative collision taken as real (no null collisions).
+    NoNullCollisions,
+}
+
+fn tracking_variant(
+    medium: &dyn Medium,
+    ray: &Ray,
+    t_max: f32,
+    max_steps: u32,
+    sampler: &mut Sampler,
+    flaw: TrackingFlaw,
+) -> FreeFlight {
+    let majorant = medium.majorant();
+    if majorant <= 0.0 {
+        return FreeFlight::Escape;
+    }
+    let reused = (sampler.next_1d(), sampler.next_1d());
+    let mut t = 0.0f32;
+    for _ in 0..max_steps {
+        let (u0, u1) = if flaw == TrackingFlaw::ReusedRandomNumbers {
+            reused
+        } else {
+            (sampler.next_1d(), sampler.next_1d())
+        };
+        t -= (1.0 - u0).ln() / majorant;
+        if t >= t_max {
+            return if flaw == TrackingFlaw::EscapeAsAbsorption {
+                FreeFlight::Absorb { t: t_max }
+            } else {
+                FreeFlight::Escape
+            };
+        }
+        let c = medium.coefficients(ray.at(t));
+        let scale = if flaw == TrackingFlaw::NoNullCollisions {
+            c.sigma_t()
+        } else {
+            majorant
+        };
+        let xi = u1 * scale;
+        if xi < c.sigma_a {
+            return FreeFlight::Absorb { t };
+        }
+        if xi < c.sigma_a + c.sigma_s {
+            return FreeFlight::Scatter { t };
+        }
+    }
+    FreeFlight::Exhausted
+}
+
+fn wrong(name: &'static str, task: TaskId, set: impl FnOnce(&mut Patch)) -> Wrong {
+    let mut patch = Patch::new(task);
+    set(&mut patch);
+    Wrong { name, task, patch }
+}
+
+/// The catalogue.
+pub fn catalogue() -> Vec<Wrong> {
+    use TaskId::*;
+    vec![
+        wrong(
+            "the sheet's recursion: no light after the camera hit",
+            PathTrace,
+            |p| {
+                p.path_trace = Some(|t, s, seg, d, sa| {
+                    path_variant(t, s, seg, d, sa, PathFlaw::NoLightAfterCamera)
+                })
+            },
+        ),
+        wrong("Russian roulette without dividing by q", PathTrace, |p| {
+            p.path_trace = Some(|t, s, seg, d, sa| {
+                path_variant(t, s, seg, d, sa, PathFlaw::RouletteWithoutDivision)
+            })
+        }),
+        wrong("emission counted twice", PathTrace, |p| {
+            p.path_trace =
+                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::EmissionTwice))
+        }),
+        wrong("the sheet's G without the cosine at the light", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::MissingLightCosine)
+            })
+        }),
+        wrong("the sheet's inverted visibility test", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::NoShadows))
+        }),
+        wrong("the sheet's mixed pdf measures in the weights", Mis, |p| {
+            p.mis =
+                Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::MixedMeasures))
+        }),
+        wrong("the sheet's reused random numbers", DeltaTracking, |p| {
+            p.delta_tracking = Some(|m, r, tm, n, s| {
+                tracking_variant(m, r, tm, n, s, TrackingFlaw::ReusedRandomNumbers)
+            })
+        }),
+        wrong(
+            "the sheet's escape reported as absorption",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::EscapeAsAbsorption)
+                })
+            },
+        ),
+        wrong("every tentative collision is real", DeltaTracking, |p| {
+            p.delta_tracking = Some(|m, r, tm, n, s| {
+                tracking_variant(m, r, tm, n, s, TrackingFlaw::NoNullCollisions)
+            })
+        }),
+    ]
+}
