@@ -1,5 +1,5 @@
 //! Scenes: the YAML format ([`schema`]), loading and validation with located errors
-//! ([`load`]), the analysis of what a scene needs ([`Needs`]), and [`Scene`], the
+//! ([`Scene::load`], [`LoadOptions`]), the analysis of what a scene needs ([`Needs`]), and [`Scene`], the
 //! framework API that integrators — the worksheet's tasks and the reference alike — call.
 //!
 //! # Conventions (kept by every part of the renderer)
