@@ -143,3 +143,19 @@ fn strands_from_a_file() {
     let out = render(&scene, &Reference, &RenderOptions::from_scene(&scene));
     assert!(out.mean.mean().max_element() > 0.0);
 }
+
+#[test]
+#[ignore = "slow: every scene at its own resolution and sample count (15 s on two cores)"]
+fn every_scene_renders_at_full_settings() {
+    for file in scene_files() {
+        let scene = Scene::load(&file, &LoadOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+        let out = render(&scene, &Reference, &RenderOptions::from_scene(&scene));
+        assert_eq!(out.stats.rejected_samples, 0, "{}", file.display());
+        let mean = out.mean.mean();
+        assert!(
+            mean.is_finite() && mean.min_element() > 0.0,
+            "{}: mean {mean}",
+            file.display()
+        );
+    }
+}

@@ -87,6 +87,15 @@ pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
     Ok(())
 }
 
+/// The tasks of [`unusable_student_tasks`] without the reasons (for callers that only list
+/// them, such as `pbrlab converge`).
+pub fn missing_student_tasks(scene: &Scene) -> Vec<TaskId> {
+    unusable_student_tasks(scene)
+        .into_iter()
+        .map(|(task, _)| task)
+        .collect()
+}
+
 /// Renders a scene from the command line.
 pub fn run(args: Args) -> Result<()> {
     let path = scene_path(args.scene.as_deref());
@@ -184,8 +193,11 @@ pub fn run(args: Args) -> Result<()> {
         let raycast = raycast::compare_with_obvhs(&scene, &rays, 5);
         if let Some(r) = &raycast {
             println!(
-                "ray casting: {:.2} M rays/s through the scene, {:.2} M rays/s through obvhs alone: {:.1} %",
+                "ray casting: {:.2} M rays/s through the scene ({} triangles and {} analytic \
+                 shapes), {:.2} M rays/s through obvhs on the triangles alone: {:.1} %",
                 r.scene_rays_per_second * 1e-6,
+                r.triangles,
+                scene.needs().analytic_shapes,
                 r.obvhs_rays_per_second * 1e-6,
                 r.ratio * 100.0
             );

@@ -6,15 +6,17 @@ use glam::{DVec3, Vec3};
 /// sheared so it becomes the z axis itself. Triangles are then tested in 2D with edge
 /// functions, which give every point of a shared edge to exactly one of the two triangles
 /// (or both): no ray slips between neighbouring triangles, unlike the Möller-Trumbore test.
+///
+/// The permutation and shear are folded into three row vectors, so a vertex `a` (relative
+/// to the origin) maps to `(a·row_x, a·row_y, a·row_z)`: each row has at most two non-zero
+/// entries, so the dot products round exactly as `a[kx] − sx a[kz]` does, without indexing
+/// by a run-time axis in the inner loop.
 #[derive(Clone, Copy, Debug)]
 pub struct WatertightRay {
     origin: Vec3,
-    kx: usize,
-    ky: usize,
-    kz: usize,
-    sx: f32,
-    sy: f32,
-    sz: f32,
+    row_x: Vec3,
+    row_y: Vec3,
+    row_z: Vec3,
 }
 
 impl WatertightRay {
@@ -35,14 +37,20 @@ impl WatertightRay {
             std::mem::swap(&mut kx, &mut ky);
         }
         let dz = ray.dir[kz];
+        let (sx, sy, sz) = (ray.dir[kx] / dz, ray.dir[ky] / dz, 1.0 / dz);
+        let mut row_x = Vec3::ZERO;
+        let mut row_y = Vec3::ZERO;
+        let mut row_z = Vec3::ZERO;
+        row_x[kx] = 1.0;
+        row_x[kz] = -sx;
+        row_y[ky] = 1.0;
+        row_y[kz] = -sy;
+        row_z[kz] = sz;
         Self {
             origin: ray.origin,
-            kx,
-            ky,
-            kz,
-            sx: ray.dir[kx] / dz,
-            sy: ray.dir[ky] / dz,
-            sz: 1.0 / dz,
+            row_x,
+            row_y,
+            row_z,
         }
     }
 
@@ -50,16 +58,15 @@ impl WatertightRay {
     /// Both faces count.
     #[inline]
     pub fn intersect(&self, v: &[Vec3; 3], t_max: f32) -> Option<f32> {
-        let (kx, ky, kz) = (self.kx, self.ky, self.kz);
         let a = v[0] - self.origin;
         let b = v[1] - self.origin;
         let c = v[2] - self.origin;
-        let ax = a[kx] - self.sx * a[kz];
-        let ay = a[ky] - self.sy * a[kz];
-        let bx = b[kx] - self.sx * b[kz];
-        let by = b[ky] - self.sy * b[kz];
-        let cx = c[kx] - self.sx * c[kz];
-        let cy = c[ky] - self.sy * c[kz];
+        let ax = a.dot(self.row_x);
+        let ay = a.dot(self.row_y);
+        let bx = b.dot(self.row_x);
+        let by = b.dot(self.row_y);
+        let cx = c.dot(self.row_x);
+        let cy = c.dot(self.row_y);
         let mut u = cx * by - cy * bx;
         let mut v_ = ax * cy - ay * cx;
         let mut w = bx * ay - by * ax;
@@ -80,7 +87,7 @@ impl WatertightRay {
         if det == 0.0 {
             return None;
         }
-        let t_scaled = u * (self.sz * a[kz]) + v_ * (self.sz * b[kz]) + w * (self.sz * c[kz]);
+        let t_scaled = u * a.dot(self.row_z) + v_ * b.dot(self.row_z) + w * c.dot(self.row_z);
         if det < 0.0 && (t_scaled >= 0.0 || t_scaled <= t_max * det)
             || det > 0.0 && (t_scaled <= 0.0 || t_scaled >= t_max * det)
         {

@@ -1,6 +1,7 @@
 //! Scenes: the YAML format ([`schema`]), loading and validation with located errors
-//! ([`load`]), the analysis of what a scene needs ([`Needs`]), and [`Scene`], the
-//! framework API that integrators — the worksheet's tasks and the reference alike — call.
+//! ([`Scene::load`], [`LoadOptions`]), the analysis of what a scene needs ([`Needs`]), and
+//! [`Scene`], the framework API that integrators — the worksheet's tasks and the reference
+//! alike — call.
 //!
 //! # Conventions (kept by every part of the renderer)
 //! - Image: a pixel's value is the plain average of radiance over its square (box filter);
