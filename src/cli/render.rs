@@ -87,15 +87,6 @@ pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
     Ok(())
 }
 
-/// The tasks of [`unusable_student_tasks`] without the reasons (for callers that only list
-/// them, such as `pbrlab converge`).
-pub fn missing_student_tasks(scene: &Scene) -> Vec<TaskId> {
-    unusable_student_tasks(scene)
-        .into_iter()
-        .map(|(task, _)| task)
-        .collect()
-}
-
 /// Renders a scene from the command line.
 pub fn run(args: Args) -> Result<()> {
     let path = scene_path(args.scene.as_deref());
