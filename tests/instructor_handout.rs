@@ -88,6 +88,12 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
             "{snap} holds hidden cases"
         );
     }
+    for check in pbrlab::grade::renders::RENDER_CHECKS {
+        for kind in ["mean", "variance"] {
+            let exr = format!("tests/snapshots/renders/{}.{kind}.exr", check.scene);
+            assert!(names.contains(&exr), "{exr}");
+        }
+    }
     assert!(manifest.cargo_toml.contains("default = []"));
     assert!(!manifest.cargo_toml.contains("default = [\"solutions\"]"));
     // No handout file carries the reference's code.
@@ -161,7 +167,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         report
             .tasks
             .iter()
-            .filter(|t| t.max_points > 0.0)
+            .filter(|t| t.max_points > 0.0 && !t.task.starts_with("scene: "))
             .all(|t| t.status == pbrlab::grade::verdict::TaskStatus::NotAttempted),
         "{}",
         pbrlab::grade::report::text(&report)

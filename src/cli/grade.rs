@@ -42,6 +42,9 @@ pub struct Args {
     /// Tasks graded at once (default: the number of cores).
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Skip the render checks (they run when every task is graded).
+    #[arg(long)]
+    pub no_renders: bool,
     /// Grade this many times with seeds seed, seed+1, … and report each task's failure rate
     /// against its declared false-failure rate (for `--impl reference`).
     #[arg(long)]
@@ -72,6 +75,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         hidden_seed: args.hidden_seed,
         timeout: Duration::from_secs_f64(args.timeout),
         memory_limit: args.memory_limit_mb << 20,
+        renders: !args.no_renders,
+        report_dir: args.html.clone(),
         ..GradeOptions::default()
     };
     if let Some(jobs) = args.jobs {

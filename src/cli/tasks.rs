@@ -58,6 +58,18 @@ pub fn run(_args: Args) -> anyhow::Result<()> {
         );
     }
     println!("{:<16} {:<62} {:>6}", "total", "", total);
+    // Render checks of the last grade: what each scene is waiting for, or how it went.
+    for t in last
+        .iter()
+        .flat_map(|r| &r.tasks)
+        .filter(|t| t.task.starts_with("scene: "))
+    {
+        let status = match &t.status {
+            TaskStatus::NeedsTask { task } => format!("waits for {task}"),
+            other => format!("{} ({:.1}/{})", other.label(), t.points, t.max_points),
+        };
+        println!("{:<30} {status}", t.task);
+    }
     match &last {
         Some(r) => println!(
             "\nLast grade: {:.1}/{} ({}). Run `pbrlab grade` again after changing your code.",

@@ -7,6 +7,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
+/// Threads a worker's renders may use.
+pub const WORKER_THREADS: usize = 2;
+
 /// How to start a worker: the program, its arguments and extra environment.
 #[derive(Clone, Debug)]
 pub struct Launcher {
@@ -48,6 +51,10 @@ impl Launcher {
         cmd.env("CI", "true")
             .env_remove("RUST_BACKTRACE")
             .env_remove("RUST_LIB_BACKTRACE");
+        // Renders use a thread pool; on a many-core machine each thread's stack and malloc
+        // arena would eat into the worker's address-space limit. A few threads suffice.
+        cmd.env("RAYON_NUM_THREADS", WORKER_THREADS.to_string())
+            .env("MALLOC_ARENA_MAX", "2");
         cmd.envs(self.env.iter().map(|(k, v)| (k, v)));
         cmd
     }

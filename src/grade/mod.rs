@@ -33,6 +33,7 @@ pub mod lenient_f64;
 pub mod output;
 pub mod panics;
 pub mod probe;
+pub mod renders;
 pub mod report;
 pub mod runner;
 pub mod sampling;

@@ -34,6 +34,10 @@ pub struct GradeOptions {
     pub memory_limit: u64,
     /// Workers running at once.
     pub jobs: usize,
+    /// Grade the scenes' renders too (each once the tasks it needs have passed).
+    pub renders: bool,
+    /// Where the HTML report goes (render checks write their pictures there).
+    pub report_dir: Option<std::path::PathBuf>,
 }
 
 impl Default for GradeOptions {
@@ -46,6 +50,8 @@ impl Default for GradeOptions {
             timeout: Duration::from_secs(30),
             memory_limit: 4 << 30,
             jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
+            renders: true,
+            report_dir: None,
         }
     }
 }
@@ -191,7 +197,8 @@ fn spec_for(
     })
 }
 
-/// Grades `options.tasks` with workers started by `launcher`.
+/// Grades `options.tasks` with workers started by `launcher`, then the scenes' renders
+/// when every task was graded.
 pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<GradeReport> {
     let start = Instant::now();
     let mut inputs = prepare(options)?;
@@ -201,61 +208,156 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
         Vec::new()
     };
     let mut jobs = Vec::new();
+    let mut outcomes = Vec::new();
     for &task in &options.tasks {
+        let input = inputs.remove(&task).unwrap_or_default();
+        if !task_has_checks(task, &input) {
+            // Reported without starting a worker.
+            outcomes.push((task.name().to_string(), no_checks(task)));
+            continue;
+        }
         jobs.push(Job {
             nonce: isolation::nonce(),
             implementation: spec_for(task, options, &attempted)?,
             kind: JobKind::Grade {
                 task: task.name().into(),
-                input: inputs.remove(&task).unwrap_or_default(),
+                input,
             },
             memory_limit: options.memory_limit,
         });
     }
-    let has_checks: Vec<bool> = jobs
-        .iter()
-        .zip(&options.tasks)
-        .map(|(job, task)| match &job.kind {
-            JobKind::Grade { input, .. } => task_has_checks(*task, input),
-            JobKind::Probe { .. } => false,
-        })
-        .collect();
-    // Tasks without any check are reported without starting a worker.
-    let (to_run, skipped): (Vec<_>, Vec<_>) =
-        jobs.into_iter().zip(has_checks).partition(|(_, has)| *has);
-    let runs = run_all(
-        launcher,
-        to_run.iter().map(|(j, _)| j.clone()).collect(),
-        options,
-    );
-    let mut outcomes: BTreeMap<TaskId, TaskOutcome> = BTreeMap::new();
-    for ((job, _), run) in to_run.iter().zip(runs) {
+    for (job, run) in jobs.iter().zip(run_all(launcher, jobs.clone(), options)) {
         let task = job_task(job);
-        outcomes.insert(task, outcome(task, run));
+        outcomes.push((task.name().to_string(), outcome(task, run)));
     }
-    for (job, _) in skipped {
-        let task = job_task(&job);
-        outcomes.insert(
-            task,
-            TaskOutcome {
-                task: task.name().into(),
-                status: TaskStatus::NoChecks,
-                points: 0.0,
-                max_points: 0.0,
-                checks: Vec::new(),
-                output: String::new(),
-                seconds: 0.0,
-            },
-        );
+    outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
+    let mut tasks: Vec<TaskOutcome> = outcomes.into_iter().map(|(_, o)| o).collect();
+    if options.renders && TaskId::ALL.iter().all(|t| options.tasks.contains(t)) {
+        let renders = grade_renders(options, launcher, &tasks, &attempted);
+        tasks.extend(renders);
     }
     let implementation = format!("{:?}", options.implementation).to_lowercase();
     Ok(GradeReport::new(
         &implementation,
         options.seed,
         options.hidden_seed.is_some(),
-        outcomes.into_values().collect(),
+        tasks,
         start.elapsed().as_secs_f64(),
     ))
+}
+
+fn no_checks(task: TaskId) -> TaskOutcome {
+    TaskOutcome {
+        task: task.name().into(),
+        status: TaskStatus::NoChecks,
+        points: 0.0,
+        max_points: 0.0,
+        checks: Vec::new(),
+        output: String::new(),
+        seconds: 0.0,
+    }
+}
+
+/// The name a scene's render check has in reports.
+pub fn scene_entry(scene: &str) -> String {
+    format!("scene: {scene}")
+}
+
+/// The render checks: a scene whose tasks have not all passed is reported as needing them
+/// (no worker starts); the others render in a worker with the student's code for every task
+/// the scene needs.
+fn grade_renders(
+    options: &GradeOptions,
+    launcher: &Launcher,
+    graded: &[TaskOutcome],
+    attempted: &[TaskId],
+) -> Vec<TaskOutcome> {
+    let mut results = Vec::new();
+    let mut jobs = Vec::new();
+    for (i, check) in super::renders::RENDER_CHECKS.iter().enumerate() {
+        let needs = match super::renders::needs(check.scene) {
+            Ok(needs) => needs,
+            Err(e) => {
+                results.push(TaskOutcome {
+                    task: scene_entry(check.scene),
+                    status: TaskStatus::GraderError {
+                        message: format!("{e:#}"),
+                    },
+                    points: 0.0,
+                    max_points: check.points,
+                    checks: Vec::new(),
+                    output: String::new(),
+                    seconds: 0.0,
+                });
+                continue;
+            }
+        };
+        let missing = super::scene_gate::missing_tasks(needs, graded);
+        if !missing.is_empty() {
+            let names: Vec<&str> = missing.iter().map(|t| t.name()).collect();
+            results.push(TaskOutcome {
+                task: scene_entry(check.scene),
+                status: TaskStatus::NeedsTask {
+                    task: names.join(", "),
+                },
+                points: 0.0,
+                max_points: check.points,
+                checks: Vec::new(),
+                output: String::new(),
+                seconds: 0.0,
+            });
+            continue;
+        }
+        let implementation = if !cfg!(feature = "solutions") {
+            ImplSpec::Student
+        } else if options.implementation == ImplChoice::Reference {
+            ImplSpec::Reference
+        } else {
+            let student = match options.implementation {
+                ImplChoice::Mixed => attempted.iter().copied().collect(),
+                _ => needs,
+            };
+            ImplSpec::Mixed {
+                student: student.iter().map(|t| t.name().to_string()).collect(),
+            }
+        };
+        jobs.push((
+            i,
+            Job {
+                nonce: isolation::nonce(),
+                implementation,
+                kind: JobKind::Render {
+                    scene: check.scene.into(),
+                    seed: options.seed.wrapping_add(0x5ce4e),
+                    report_dir: options.report_dir.clone(),
+                },
+                memory_limit: options.memory_limit,
+            },
+        ));
+    }
+    let runs = run_all(
+        launcher,
+        jobs.iter().map(|(_, j)| j.clone()).collect(),
+        options,
+    );
+    for ((i, _), run) in jobs.iter().zip(runs) {
+        let check = super::renders::RENDER_CHECKS[*i];
+        let mut outcome = outcome(TaskId::PathTrace, run);
+        outcome.task = scene_entry(check.scene);
+        outcome.max_points = check.points;
+        outcome.points = if outcome.status == TaskStatus::Passed {
+            check.points
+        } else {
+            0.0
+        };
+        results.push(outcome);
+    }
+    results.sort_by_key(|o| {
+        super::renders::RENDER_CHECKS
+            .iter()
+            .position(|c| scene_entry(c.scene) == o.task)
+    });
+    results
 }
 
 fn job_task(job: &Job) -> TaskId {
@@ -263,6 +365,7 @@ fn job_task(job: &Job) -> TaskId {
         JobKind::Grade { task, .. } | JobKind::Probe { task } => {
             TaskId::parse(task).unwrap_or(TaskId::Reflect)
         }
+        JobKind::Render { .. } => TaskId::PathTrace,
     }
 }
 

@@ -68,6 +68,15 @@ pub enum JobKind {
         /// The task id.
         task: String,
     },
+    /// Render a scene and compare it with the stored reference render.
+    Render {
+        /// The scene's name (see [`super::renders::RENDER_CHECKS`]).
+        scene: String,
+        /// Seed of the render.
+        seed: u64,
+        /// Where to write the pictures for the HTML report.
+        report_dir: Option<std::path::PathBuf>,
+    },
 }
 
 /// A job for a worker process.
@@ -110,6 +119,18 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind) -> Record {
     let result = match kind {
         JobKind::Grade { task, input } => task_of(task).map(|task| Record::Checks {
             checks: grade_task(t, task, input),
+        }),
+        JobKind::Render {
+            scene,
+            seed,
+            report_dir,
+        } => Ok(Record::Checks {
+            checks: vec![super::renders::check(
+                t,
+                scene,
+                *seed,
+                report_dir.as_deref(),
+            )],
         }),
         JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
             attempted: match panics::catch(|| super::probe::probe_task(t, task)) {

@@ -4,12 +4,16 @@
 //! Left out: `solutions/`, build output and local state, instructor tests (files named
 //! `instructor_*`, and any test or bench that uses the reference: it would not build
 //! without it, and may contain correct code), support folders only those tests use, and
-//! insta snapshots of tests that are left out. The grader's expected data
-//! (`tests/snapshots/expected/`) stays: it holds the public cases only, which is what lets
-//! the handout grade without solutions.
+//! insta snapshots of tests that are left out. The grader's data (`tests/snapshots/expected/`
+//! and `tests/snapshots/renders/`) stays: it holds the public cases and the reference
+//! renders only, which is what lets the handout grade without solutions.
 
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
+
+/// Folders of `tests/snapshots/` that hold the grader's data (the public expected outputs
+/// and the reference renders), which the handout needs to grade.
+const GRADER_DATA: &[&str] = &["expected", "renders"];
 
 /// Top-level entries copied into the handout (when present).
 const TOP_LEVEL: &[&str] = &[
@@ -110,7 +114,7 @@ fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<Pat
                     .iter()
                     .any(|(stem, _)| format!("{stem}.rs") == first),
                 Some(second) if first == "snapshots" => {
-                    second == "expected"
+                    GRADER_DATA.contains(&second.as_str())
                         || kept_targets
                             .iter()
                             .any(|(stem, _)| second.starts_with(&format!("{stem}__")))

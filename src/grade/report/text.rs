@@ -75,6 +75,9 @@ pub fn details(t: &TaskOutcome) -> String {
                 "  the grader failed here, not your code ({message}); grade again"
             );
         }
+        TaskStatus::NeedsTask { task } if t.task.starts_with("scene: ") => {
+            let _ = writeln!(s, "  the render is graded once these tasks pass: {task}");
+        }
         TaskStatus::NeedsTask { task } => {
             let _ = writeln!(s, "  grading stops at `{task}`, which is not written yet");
         }
