@@ -5,9 +5,11 @@
 //! are uniform on [0, 1], so the share below 5 % (or 1 %) should be about 5 % (1 %). That
 //! shows the calibration with far fewer runs than observing the declared rate itself.
 
+use super::image_check;
 use super::isolation::Launcher;
-use super::runner::{GradeOptions, grade};
-use super::verdict::{CheckKind, TaskStatus};
+use super::renders::RENDER_CHECKS;
+use super::runner::{GradeOptions, grade, scene_entry};
+use super::verdict::TaskStatus;
 use serde::{Deserialize, Serialize};
 use statrs::distribution::{Binomial, DiscreteCDF};
 use std::fmt::Write;
@@ -19,7 +21,8 @@ pub struct TaskRates {
     pub task: String,
     /// Runs in which the task did not pass.
     pub failures: usize,
-    /// The false-failure rate its checks declare (0 for tasks without statistical checks).
+    /// The false-failure rate its checks declare (0 for tasks without statistical checks);
+    /// a scene's includes the rates of the tasks its render waits for.
     pub declared_alpha: f64,
     /// The p-values of every statistical sub-test in every run.
     pub p_values: Vec<f64>,
@@ -85,15 +88,9 @@ pub fn repeat(
                     tasks.last_mut().expect("just pushed")
                 }
             };
-            let statistical = t
-                .checks
-                .iter()
-                .any(|c| matches!(c.kind, CheckKind::Sampling | CheckKind::Estimator));
-            rates.declared_alpha = if statistical {
-                super::checks::TASK_ALPHA
-            } else {
-                0.0
-            };
+            rates.declared_alpha = rates
+                .declared_alpha
+                .max(either(t.checks.iter().map(|c| c.alpha)));
             rates
                 .p_values
                 .extend(t.checks.iter().flat_map(|c| c.p_values.iter().copied()));
@@ -109,7 +106,36 @@ pub fn repeat(
             }
         }
     }
+    declare_scene_rates(&mut tasks);
     Ok(Calibration { runs, tasks })
+}
+
+/// The probability that at least one of independent events with probabilities `alphas`
+/// happens: 1 − ∏(1 − α).
+fn either(alphas: impl IntoIterator<Item = f64>) -> f64 {
+    1.0 - alphas.into_iter().map(|a| 1.0 - a).product::<f64>()
+}
+
+/// A scene's render is graded only once every task it needs has passed, so a false failure
+/// of one of those tasks fails the scene too: its declared rate is that of its image check
+/// or of any task it waits for.
+fn declare_scene_rates(tasks: &mut [TaskRates]) {
+    for check in RENDER_CHECKS {
+        let Ok(needs) = super::renders::needs(check.scene) else {
+            continue;
+        };
+        let waits_for: Vec<f64> = tasks
+            .iter()
+            .filter(|r| needs.iter().any(|n| n.name() == r.task))
+            .map(|r| r.declared_alpha)
+            .collect();
+        if let Some(scene) = tasks
+            .iter_mut()
+            .find(|r| r.task == scene_entry(check.scene))
+        {
+            scene.declared_alpha = either(std::iter::once(image_check::ALPHA).chain(waits_for));
+        }
+    }
 }
 
 impl Calibration {
@@ -140,7 +166,7 @@ impl Calibration {
             };
             let _ = writeln!(
                 s,
-                "{:<16} {:>9} {:>9.4} {:>9} {:>10.3} {shares}",
+                "{:<16} {:>9} {:>9.4} {:>9.4} {:>10.3} {shares}",
                 t.task,
                 format!("{}/{}", t.failures, self.runs),
                 t.failures as f64 / self.runs.max(1) as f64,
@@ -170,5 +196,40 @@ impl Calibration {
             );
         }
         s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rates(task: &str, declared_alpha: f64) -> TaskRates {
+        TaskRates {
+            task: task.into(),
+            failures: 0,
+            declared_alpha,
+            p_values: Vec::new(),
+            example: None,
+        }
+    }
+
+    #[test]
+    fn a_scene_declares_the_rates_of_the_tasks_it_waits_for() {
+        let mut tasks = vec![
+            rates("reflect", 0.0),
+            rates("cosine_sample", 1e-3),
+            rates("path_trace", 1e-3),
+            rates(&scene_entry("cornell"), 0.0),
+        ];
+        declare_scene_rates(&mut tasks);
+        let needs = super::super::renders::needs("cornell").expect("cornell loads");
+        let waits = ["cosine_sample", "path_trace"]
+            .iter()
+            .filter(|t| needs.iter().any(|n| n.name() == **t))
+            .count();
+        assert!(waits > 0, "cornell needs {needs:?}");
+        let expected = 1.0 - (1.0 - image_check::ALPHA) * (1.0 - 1e-3f64).powi(waits as i32);
+        assert!((tasks[3].declared_alpha - expected).abs() < 1e-15);
+        assert_eq!(tasks[0].declared_alpha, 0.0);
     }
 }
