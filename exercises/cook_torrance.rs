@@ -17,6 +17,13 @@
 //!   `(1 − cos)^5` factor. The angle is the one between the light and the facet normal `h`,
 //!   not the macroscopic normal; `wo·h = wi·h`.
 //!
+//! Schlick's curve is an approximation: for gold's blue channel it is up to 7 % off the exact
+//! conductor Fresnel equations. A scene that gives a metal by its complex index of refraction
+//! (`eta` and `k`, as in `scenes/materials.yaml`) is rendered the way pbrt and Mitsuba render
+//! it: the renderer calls your function with `f0 = 1` (so `F` is exactly 1) and multiplies by
+//! the exact Fresnel reflectance itself. Metals given by an RGB `reflectance` use your Schlick
+//! term.
+//!
 //! ## Convention
 //! Local frame (z = normal), both directions away from the surface; `alpha_x` applies along
 //! local x. Return RGB.

@@ -6,7 +6,8 @@
     python3 tools/mitsuba_compare.py scenes/cornell.yaml /tmp/ours.exr --spp 256
 
 Supported: quads, spheres, boxes, OBJ meshes with transforms; diffuse, mirror, dielectric,
-and isotropic conductors with `reflectance: 1` (Schlick with f0 = 1 is exactly F = 1, which
+and isotropic conductors given by `eta` and `k` (both renderers use the exact conductor
+Fresnel equations) or with `reflectance: 1` (Schlick with f0 = 1 is exactly F = 1, which
 Mitsuba's `material: none` matches); area, point and constant environment lights;
 homogeneous media. pbrlab's conventions (two-sided opaque materials, box filter, vertical
 field of view, max_depth counting segments) are mapped onto Mitsuba's.
@@ -48,11 +49,16 @@ def bsdf(spec):
         return {"type": "twosided", "b": {"type": "conductor", "material": "none",
                                           "specular_reflectance": rgb(p.get("reflectance", 1))}}
     if kind == "conductor":
-        if "roughness" not in p or p.get("reflectance") != 1:
-            raise SystemExit("only isotropic conductors with reflectance 1 have a Mitsuba twin")
-        return {"type": "twosided", "b": {"type": "roughconductor", "distribution": "ggx",
-                                          "alpha": p["roughness"], "material": "none",
-                                          "specular_reflectance": rgb(1)}}
+        if "roughness" not in p:
+            raise SystemExit("only isotropic conductors have a Mitsuba twin")
+        twin = {"type": "roughconductor", "distribution": "ggx", "alpha": p["roughness"]}
+        if "eta" in p:
+            twin.update(eta=rgb(p["eta"]), k=rgb(p["k"]))
+        elif p.get("reflectance") == 1:
+            twin.update(material="none", specular_reflectance=rgb(1))
+        else:
+            raise SystemExit("a conductor needs eta and k, or reflectance 1, for a Mitsuba twin")
+        return {"type": "twosided", "b": twin}
     if kind == "dielectric":
         return {"type": "dielectric", "int_ior": p["ior"], "ext_ior": p.get("ext_ior", 1.0)}
     raise SystemExit("no Mitsuba twin for material " + kind)

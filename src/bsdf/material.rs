@@ -51,14 +51,14 @@ pub enum Material {
         /// Which Fresnel reflectance to use.
         fresnel: FresnelModel,
     },
-    /// A rough conductor: the Cook-Torrance BRDF with anisotropic GGX and Schlick Fresnel.
+    /// A rough conductor: the Cook-Torrance BRDF with anisotropic GGX.
     Conductor {
         /// GGX roughness along the frame's tangent `s`.
         alpha_x: f32,
         /// GGX roughness along the frame's bitangent `t`.
         alpha_y: f32,
-        /// Reflectance at normal incidence per RGB channel.
-        f0: Vec3,
+        /// Its Fresnel reflectance.
+        fresnel: ConductorFresnel,
     },
     /// The energy-normalised Phong BRDF.
     Phong(PhongParams),
@@ -66,6 +66,50 @@ pub enum Material {
     KajiyaKay(KajiyaKayParams),
     /// Reflects nothing (the surface of a light that only emits).
     Black,
+}
+
+/// How a rough conductor's Fresnel reflectance is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConductorFresnel {
+    /// Schlick's curve through an RGB reflectance at normal incidence (the `cook_torrance`
+    /// task's own Fresnel term).
+    Schlick {
+        /// Reflectance at normal incidence per RGB channel.
+        f0: Vec3,
+    },
+    /// The exact conductor Fresnel equations for the complex index of refraction
+    /// `eta + i k` (as pbrt and Mitsuba use): the `cook_torrance` task is called with
+    /// `f0 = 1`, which makes its Schlick term exactly 1, and the framework multiplies by
+    /// [`crate::optics::fresnel_conductor`] at the half vector.
+    Complex {
+        /// Real part of the index of refraction per RGB channel.
+        eta: Vec3,
+        /// Extinction coefficient per RGB channel.
+        k: Vec3,
+    },
+}
+
+impl ConductorFresnel {
+    /// The `f0` argument for the `cook_torrance` task.
+    pub fn task_f0(&self) -> Vec3 {
+        match *self {
+            ConductorFresnel::Schlick { f0 } => f0,
+            ConductorFresnel::Complex { .. } => Vec3::ONE,
+        }
+    }
+
+    /// The factor the framework applies on top of the task's value for the pair `wo`, `wi`
+    /// (local frame, both above the surface): 1 for Schlick, the exact Fresnel reflectance
+    /// at `wo · h` for a complex index.
+    pub fn framework_factor(&self, wo: Vec3, wi: Vec3) -> Vec3 {
+        match *self {
+            ConductorFresnel::Schlick { .. } => Vec3::ONE,
+            ConductorFresnel::Complex { eta, k } => {
+                let h = (wo + wi).normalize_or_zero();
+                crate::optics::fresnel_conductor(wo.dot(h), eta, k)
+            }
+        }
+    }
 }
 
 impl Material {

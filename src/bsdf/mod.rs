@@ -10,7 +10,7 @@ mod plausibility;
 mod sample;
 mod surface;
 
-pub use material::{FresnelModel, HemisphereSampling, Material};
+pub use material::{ConductorFresnel, FresnelModel, HemisphereSampling, Material};
 pub use microfacet::{MIN_ALPHA, projected_alpha};
 pub use params::{KajiyaKayParams, PhongParams};
 pub use plausibility::PlausibilityReport;

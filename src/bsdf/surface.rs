@@ -66,10 +66,12 @@ impl<'a> Bsdf<'a> {
             Material::Conductor {
                 alpha_x,
                 alpha_y,
-                f0,
+                fresnel,
             } => {
                 if wo_f.z > 0.0 && wi_f.z > 0.0 {
-                    t.cook_torrance(wo_f, wi_f, *alpha_x, *alpha_y, *f0) * wi_f.z
+                    t.cook_torrance(wo_f, wi_f, *alpha_x, *alpha_y, fresnel.task_f0())
+                        * fresnel.framework_factor(wo_f, wi_f)
+                        * wi_f.z
                 } else {
                     Vec3::ZERO
                 }
@@ -198,7 +200,7 @@ impl<'a> Bsdf<'a> {
             Material::Conductor {
                 alpha_x,
                 alpha_y,
-                f0,
+                fresnel,
             } => {
                 if wo_f.z <= 0.0 {
                     return None;
@@ -208,7 +210,9 @@ impl<'a> Bsdf<'a> {
                 if (pdf.is_nan() || pdf <= 0.0) || wi_f.z <= 0.0 {
                     return None;
                 }
-                let f = t.cook_torrance(wo_f, wi_f, *alpha_x, *alpha_y, *f0) * wi_f.z;
+                let f = t.cook_torrance(wo_f, wi_f, *alpha_x, *alpha_y, fresnel.task_f0())
+                    * fresnel.framework_factor(wo_f, wi_f)
+                    * wi_f.z;
                 Some(BsdfSample {
                     wi: to_world(wi_f),
                     weight: f / pdf,

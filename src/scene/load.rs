@@ -13,7 +13,7 @@ use super::schema::{
 };
 use super::settings::{RenderSettings, UNBOUNDED_DEPTH};
 use super::{Camera, Scene, ShapeInfo, density, strands};
-use crate::bsdf::{HemisphereSampling, KajiyaKayParams, Material, PhongParams};
+use crate::bsdf::{ConductorFresnel, HemisphereSampling, KajiyaKayParams, Material, PhongParams};
 use crate::geometry::{FibreSegment, FibreSet, Geometry, Quad, Sphere, TriangleSet};
 use crate::integrator::Heuristic;
 use crate::light::{Light, Lights, Patch};
@@ -472,17 +472,12 @@ impl Builder<'_> {
                 ));
             }
         };
-        let f0 = match (&c.reflectance, c.eta, c.k) {
+        let fresnel = match (&c.reflectance, c.eta, c.k) {
             (Some(r), None, None) => {
                 self.warn_above_one(r, "a reflectance");
-                r.value.0
+                ConductorFresnel::Schlick { f0: r.value.0 }
             }
-            (None, Some(eta), Some(k)) => {
-                let (n, k) = (eta.0, k.0);
-                let num = (n - 1.0) * (n - 1.0) + k * k;
-                let den = (n + 1.0) * (n + 1.0) + k * k;
-                num / den
-            }
+            (None, Some(eta), Some(k)) => ConductorFresnel::Complex { eta: eta.0, k: k.0 },
             _ => {
                 return Err(self.error(
                     at,
@@ -493,7 +488,7 @@ impl Builder<'_> {
         Ok(Material::Conductor {
             alpha_x,
             alpha_y,
-            f0,
+            fresnel,
         })
     }
 
