@@ -165,7 +165,7 @@ fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
 #[test]
 fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_flattens() {
     use pbrlab::implementation::Reference;
-    use stability_support::{Flaw, Flawed};
+    use stability_support::{Flaw, flawed};
 
     let summaries = run_builtin("microfacet_albedo", Reference, 1024);
     for s in &summaries {
@@ -179,7 +179,7 @@ fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_
         final_of("mis_balance") < final_of("ndf") && final_of("mis_balance") < final_of("uniform")
     );
 
-    let summaries = run_builtin("microfacet_albedo", Flawed(Flaw::NdfPdfNoJacobian), 1024);
+    let summaries = run_builtin("microfacet_albedo", flawed(Flaw::NdfPdfNoJacobian), 1024);
     for s in &summaries {
         let uses_ndf_pdf = !matches!(s.strategy.as_str(), "uniform" | "cosine");
         assert_eq!(
@@ -234,7 +234,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
     use pbrlab::implementation::Reference;
     use pbrlab::scene::LoadOptions;
-    use stability_support::{Flaw, Flawed};
+    use stability_support::{Flaw, flawed};
 
     let out = tempfile::tempdir().unwrap();
     let base = LoadOptions {
@@ -283,7 +283,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     // every strategy flattens.
     let study = scene_study(
         &furnace,
-        Flawed(Flaw::MisUnguarded),
+        flawed(Flaw::MisUnguarded),
         &base,
         source(),
         out.path(),

@@ -13,7 +13,7 @@ use std::time::Duration;
 use {
     pbrlab::stability::cases_for,
     pbrlab::worksheet::TaskId,
-    stability_support::{Flaw, Flawed},
+    stability_support::{Flaw, flawed},
     std::collections::BTreeMap,
 };
 
@@ -31,7 +31,7 @@ fn run_all<T: Tasks + Clone + Send + 'static>(
 /// The cases that did not pass, with their verdicts.
 #[cfg(feature = "solutions")]
 fn failures(flaw: Flaw) -> BTreeMap<&'static str, Verdict> {
-    run_all(Flawed(flaw), &cases(), TIMEOUT)
+    run_all(flawed(flaw), &cases(), TIMEOUT)
         .into_iter()
         .filter(|o| o.verdict != Verdict::Pass)
         .map(|o| (o.case, o.verdict))
@@ -253,7 +253,7 @@ fn each_naive_implementation_fails_exactly_its_cases() {
 fn code_that_never_returns_is_reported_as_a_hang() {
     let start = std::time::Instant::now();
     let outcomes = run_all(
-        Flawed(Flaw::SmithHangs),
+        flawed(Flaw::SmithHangs),
         &cases_for(TaskId::SmithG1),
         Duration::from_millis(150),
     );
@@ -273,7 +273,7 @@ fn code_that_never_returns_is_reported_as_a_hang() {
 #[test]
 fn a_panic_is_reported_with_its_message() {
     let outcomes = run_all(
-        Flawed(Flaw::ReflectPanics),
+        flawed(Flaw::ReflectPanics),
         &cases_for(TaskId::Reflect),
         TIMEOUT,
     );
@@ -293,7 +293,7 @@ fn a_panic_is_reported_with_its_message() {
 #[test]
 fn json_output_names_the_task_and_spells_out_nan() {
     let outcomes = run_all(
-        Flawed(Flaw::PhongUnclamped),
+        flawed(Flaw::PhongUnclamped),
         &cases_for(TaskId::Phong),
         TIMEOUT,
     );

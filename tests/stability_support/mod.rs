@@ -1,23 +1,20 @@
-//! Implementations of [`Tasks`] for the stability tests: the reference with one function
-//! replaced by a deliberately naive one. Every other function is the reference's, called
-//! with the flawed implementation as its `t`, so a flaw propagates to the tasks that use
-//! it, as a student's would under `Mixed`.
+//! Implementations of [`pbrlab::worksheet::Tasks`] for the stability tests: the reference
+//! with one function replaced by a deliberately naive one (a [`Patch`] of the grader's
+//! tests). Every other function is the reference's, called with the flawed implementation
+//! as its `t`, so a flaw propagates to the tasks that use it, as a student's would under
+//! `Mixed`.
 
 pub mod naive;
+#[path = "../instructor_support/patch.rs"]
+pub mod patch;
 
 use glam::Vec3;
-use pbrlab::bsdf::{KajiyaKayParams, PhongParams};
-use pbrlab::geometry::{Hit, Ray};
-use pbrlab::integrator::{DirectLight, Heuristic, Segment};
-use pbrlab::medium::{FreeFlight, Medium};
-use pbrlab::optics::{LayerStack, StackReport};
-use pbrlab::sampling::Sampler;
-use pbrlab::scene::Scene;
-use pbrlab::solutions as reference;
-use pbrlab::worksheet::Tasks;
+use patch::Patch;
+use pbrlab::task_set::TaskSet;
+use pbrlab::worksheet::TaskId;
 use std::time::Duration;
 
-/// The one thing a [`Flawed`] implementation gets wrong.
+/// The one thing a [`flawed`] implementation gets wrong.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Flaw {
     /// Nothing: the reference.
@@ -63,152 +60,61 @@ pub enum Flaw {
     ReflectPanics,
 }
 
-/// The reference with at most one [`Flaw`]. Functions without a flaw come from the
-/// trait's reference defaults.
-#[derive(Clone, Copy, Debug)]
-pub struct Flawed(pub Flaw);
-
-impl Tasks for Flawed {
-    fn reflect(&self, wo: Vec3, n: Vec3) -> Vec3 {
-        match self.0 {
-            Flaw::ReflectUnnormalised => naive::reflect(wo, n),
-            Flaw::ReflectPanics => panic!("index out of bounds: the len is 3 but the index is 3"),
-            _ => reference::reflect::reflect(wo, n),
+/// The reference with `flaw`, in force for every task.
+pub fn flawed(flaw: Flaw) -> Patch {
+    let task = match flaw {
+        Flaw::None | Flaw::ReflectUnnormalised | Flaw::ReflectPanics => TaskId::Reflect,
+        Flaw::UnguardedSnell | Flaw::CriticalAngleAsin => TaskId::RefractStack,
+        Flaw::SchlickR0Everywhere => TaskId::FresnelSchlick,
+        Flaw::CosinePdfSigned => TaskId::CosineSample,
+        Flaw::SmithNoChi | Flaw::SmithHangs => TaskId::SmithG1,
+        Flaw::HalfVectorUnguarded => TaskId::CookTorrance,
+        Flaw::CancellingGgx => TaskId::AnisoNdf,
+        Flaw::PhongUnclamped | Flaw::GapZeroOverZero => TaskId::Phong,
+        Flaw::SheetKajiyaKay => TaskId::KajiyaKay,
+        Flaw::BeckmannUnguarded => TaskId::BeckmannNdf,
+        Flaw::NdfPdfUnguarded | Flaw::NdfPdfNoJacobian => TaskId::NdfSample,
+        Flaw::PathTraceNoDepthGuard => TaskId::PathTrace,
+        Flaw::MisUnguarded => TaskId::Mis,
+        Flaw::DeltaTrackingSheet => TaskId::DeltaTracking,
+    };
+    let mut p = Patch::new(task).only(TaskSet::all());
+    match flaw {
+        Flaw::None => {}
+        Flaw::ReflectUnnormalised => p.reflect = Some(naive::reflect),
+        Flaw::ReflectPanics => {
+            p.reflect = Some(|_: Vec3, _: Vec3| -> Vec3 {
+                panic!("index out of bounds: the len is 3 but the index is 3")
+            })
         }
-    }
-    fn refract(&self, wi: Vec3, n: Vec3, eta_i: f32, eta_t: f32) -> Option<Vec3> {
-        match self.0 {
-            Flaw::UnguardedSnell => naive::refract(wi, n, eta_i, eta_t),
-            _ => reference::refract_stack::refract(wi, n, eta_i, eta_t),
+        Flaw::UnguardedSnell => {
+            p.refract = Some(naive::refract);
+            p.refract_stack = Some(naive::refract_stack);
+            p.fresnel_schlick = Some(naive::fresnel_schlick_unguarded);
         }
-    }
-    fn critical_angle(&self, eta_i: f64, eta_t: f64) -> Option<f64> {
-        match self.0 {
-            Flaw::CriticalAngleAsin => naive::critical_angle(eta_i, eta_t),
-            _ => reference::refract_stack::critical_angle(eta_i, eta_t),
+        Flaw::CriticalAngleAsin => p.critical_angle = Some(naive::critical_angle),
+        Flaw::SchlickR0Everywhere => p.fresnel_schlick = Some(naive::fresnel_schlick_r0_everywhere),
+        Flaw::CosinePdfSigned => p.cosine_pdf = Some(naive::cosine_pdf),
+        Flaw::SmithNoChi => p.smith_g1 = Some(naive::smith_g1),
+        Flaw::SmithHangs => {
+            p.smith_g1 = Some(|_: Vec3, _: f32| -> f32 {
+                loop {
+                    // Sleeps rather than spins, so the abandoned thread costs no CPU.
+                    std::thread::sleep(Duration::from_secs(3600));
+                }
+            })
         }
+        Flaw::HalfVectorUnguarded => p.cook_torrance = Some(naive::cook_torrance),
+        Flaw::CancellingGgx => p.aniso_ndf = Some(naive::aniso_ndf),
+        Flaw::PhongUnclamped => p.phong = Some(naive::phong),
+        Flaw::GapZeroOverZero => p.reciprocity_gap = Some(naive::reciprocity_gap),
+        Flaw::SheetKajiyaKay => p.kajiya_kay = Some(naive::kajiya_kay),
+        Flaw::BeckmannUnguarded => p.beckmann_ndf = Some(naive::beckmann_ndf),
+        Flaw::NdfPdfUnguarded => p.ndf_pdf = Some(naive::ndf_pdf),
+        Flaw::NdfPdfNoJacobian => p.ndf_pdf = Some(naive::ndf_pdf_no_jacobian),
+        Flaw::PathTraceNoDepthGuard => p.path_trace = Some(naive::path_trace_no_depth_guard),
+        Flaw::MisUnguarded => p.mis = Some(naive::mis_unguarded),
+        Flaw::DeltaTrackingSheet => p.delta_tracking = Some(naive::delta_tracking_sheet),
     }
-    fn refract_stack(&self, theta_deg: f64, stack: &LayerStack) -> StackReport {
-        match self.0 {
-            Flaw::UnguardedSnell => naive::refract_stack(self, theta_deg, stack),
-            _ => reference::refract_stack::refract_stack(self, theta_deg, stack),
-        }
-    }
-    fn fresnel_schlick(&self, cos_theta_i: f32, eta_i: f32, eta_t: f32) -> f32 {
-        match self.0 {
-            Flaw::SchlickR0Everywhere => {
-                naive::fresnel_schlick_r0_everywhere(self, cos_theta_i, eta_i, eta_t)
-            }
-            Flaw::UnguardedSnell => {
-                naive::fresnel_schlick_unguarded(self, cos_theta_i, eta_i, eta_t)
-            }
-            _ => reference::fresnel_schlick::fresnel_schlick(self, cos_theta_i, eta_i, eta_t),
-        }
-    }
-    fn cosine_pdf(&self, w: Vec3) -> f32 {
-        match self.0 {
-            Flaw::CosinePdfSigned => naive::cosine_pdf(w),
-            _ => reference::cosine_sample::cosine_pdf(w),
-        }
-    }
-    fn smith_g1(&self, w: Vec3, alpha: f32) -> f32 {
-        match self.0 {
-            Flaw::SmithNoChi => naive::smith_g1(w, alpha),
-            Flaw::SmithHangs => loop {
-                // Sleeps rather than spins, so the abandoned thread costs no CPU.
-                std::thread::sleep(Duration::from_secs(3600));
-            },
-            _ => reference::smith_g1::smith_g1(w, alpha),
-        }
-    }
-    fn cook_torrance(&self, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32, f0: Vec3) -> Vec3 {
-        match self.0 {
-            Flaw::HalfVectorUnguarded => naive::cook_torrance(self, wo, wi, alpha_x, alpha_y, f0),
-            _ => reference::cook_torrance::cook_torrance(self, wo, wi, alpha_x, alpha_y, f0),
-        }
-    }
-    fn aniso_ndf(&self, h: Vec3, alpha_x: f32, alpha_y: f32) -> f32 {
-        match self.0 {
-            Flaw::CancellingGgx => naive::aniso_ndf(h, alpha_x, alpha_y),
-            _ => reference::aniso_ndf::aniso_ndf(h, alpha_x, alpha_y),
-        }
-    }
-    fn phong(&self, wo: Vec3, wi: Vec3, params: &PhongParams) -> Vec3 {
-        match self.0 {
-            Flaw::PhongUnclamped => naive::phong(self, wo, wi, params),
-            _ => reference::phong::phong(self, wo, wi, params),
-        }
-    }
-    fn reciprocity_gap(
-        &self,
-        brdf: &dyn Fn(Vec3, Vec3) -> f32,
-        sampler: &mut Sampler,
-        pairs: usize,
-    ) -> f32 {
-        match self.0 {
-            Flaw::GapZeroOverZero => naive::reciprocity_gap(brdf, sampler, pairs),
-            _ => reference::phong::reciprocity_gap(brdf, sampler, pairs),
-        }
-    }
-    fn kajiya_kay(&self, wo: Vec3, wi: Vec3, tangent: Vec3, params: &KajiyaKayParams) -> Vec3 {
-        match self.0 {
-            Flaw::SheetKajiyaKay => naive::kajiya_kay(wo, wi, tangent, params),
-            _ => reference::kajiya_kay::kajiya_kay(wo, wi, tangent, params),
-        }
-    }
-    fn beckmann_ndf(&self, h: Vec3, alpha: f32) -> f32 {
-        match self.0 {
-            Flaw::BeckmannUnguarded => naive::beckmann_ndf(h, alpha),
-            _ => reference::beckmann_ndf::beckmann_ndf(h, alpha),
-        }
-    }
-    fn ndf_pdf(&self, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> f32 {
-        match self.0 {
-            Flaw::NdfPdfUnguarded => naive::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
-            Flaw::NdfPdfNoJacobian => naive::ndf_pdf_no_jacobian(self, wo, wi, alpha_x, alpha_y),
-            _ => reference::ndf_sample::ndf_pdf(self, wo, wi, alpha_x, alpha_y),
-        }
-    }
-    fn path_trace(
-        &self,
-        scene: &Scene,
-        segment: &Segment,
-        depth: i32,
-        sampler: &mut Sampler,
-    ) -> Vec3 {
-        match self.0 {
-            Flaw::PathTraceNoDepthGuard => {
-                naive::path_trace_no_depth_guard(self, scene, segment, depth, sampler)
-            }
-            _ => reference::path_trace::path_trace(self, scene, segment, depth, sampler),
-        }
-    }
-    fn mis(
-        &self,
-        scene: &Scene,
-        hit: &Hit,
-        wo: Vec3,
-        heuristic: Heuristic,
-        sampler: &mut Sampler,
-    ) -> DirectLight {
-        match self.0 {
-            Flaw::MisUnguarded => naive::mis_unguarded(self, scene, hit, wo, heuristic, sampler),
-            _ => reference::mis::mis(self, scene, hit, wo, heuristic, sampler),
-        }
-    }
-    fn delta_tracking(
-        &self,
-        medium: &dyn Medium,
-        ray: &Ray,
-        t_max: f32,
-        max_steps: u32,
-        sampler: &mut Sampler,
-    ) -> FreeFlight {
-        match self.0 {
-            Flaw::DeltaTrackingSheet => {
-                naive::delta_tracking_sheet(medium, ray, t_max, max_steps, sampler)
-            }
-            _ => reference::delta_tracking::delta_tracking(medium, ray, t_max, max_steps, sampler),
-        }
-    }
+    p
 }
