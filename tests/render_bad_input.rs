@@ -106,6 +106,19 @@ fn unknown_material_name() {
 }
 
 #[test]
+fn unknown_medium_name() {
+    let text = format!(
+        "{CAMERA}shapes:\n  - sphere: {{center: [0, 0, 0], radius: 1, medium: fog}}\nlights:\n  - point: {{position: [0, 3, 0], intensity: 1}}\n"
+    );
+    assert_error_at(
+        &text,
+        3,
+        52,
+        "no medium is named `fog`; the media are: (none)",
+    );
+}
+
+#[test]
 fn shape_without_surface() {
     let text = format!("{CAMERA}shapes:\n  - sphere: {{center: [0, 0, 0], radius: 1}}\n");
     assert_error_at(&text, 3, 5, "no material");

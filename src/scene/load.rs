@@ -147,6 +147,30 @@ impl Builder<'_> {
         }
     }
 
+    /// The error for a reference to a `kind` that no entry of the scene's `kinds` defines,
+    /// listing the names it does define.
+    fn unknown_name<'n>(
+        &self,
+        name: &Spanned<String>,
+        kind: &str,
+        kinds: &str,
+        known: impl Iterator<Item = &'n str>,
+    ) -> SceneError {
+        let known: Vec<&str> = known.collect();
+        let list = if known.is_empty() {
+            "(none)".to_string()
+        } else {
+            known.join(", ")
+        };
+        self.error(
+            &name.referenced,
+            format!(
+                "no {kind} is named `{}`; the {kinds} are: {list}",
+                name.value
+            ),
+        )
+    }
+
     fn warn(&mut self, at: &Location, message: impl Into<String>) {
         let w = self.error(at, message);
         self.warnings.push(w);
@@ -584,36 +608,22 @@ impl Builder<'_> {
         let surface = spanned.value.surface();
         let material = match surface.material {
             Some(name) => Some(*material_index.get(name.value.as_str()).ok_or_else(|| {
-                let known: Vec<&str> = material_index.keys().copied().collect();
-                self.error(
-                    &name.referenced,
-                    format!(
-                        "no material is named `{}`; the materials are: {}",
-                        name.value,
-                        if known.is_empty() {
-                            "(none)".to_string()
-                        } else {
-                            known.join(", ")
-                        }
-                    ),
+                self.unknown_name(
+                    name,
+                    "material",
+                    "materials",
+                    material_index.keys().copied(),
                 )
             })?),
             None => None,
         };
         let medium_spec = match surface.medium {
             Some(name) => Some(spec.media.get(&name.value).ok_or_else(|| {
-                let known: Vec<&str> = spec.media.keys().map(String::as_str).collect();
-                self.error(
-                    &name.referenced,
-                    format!(
-                        "no medium is named `{}`; the media are: {}",
-                        name.value,
-                        if known.is_empty() {
-                            "(none)".to_string()
-                        } else {
-                            known.join(", ")
-                        }
-                    ),
+                self.unknown_name(
+                    name,
+                    "medium",
+                    "media",
+                    spec.media.keys().map(String::as_str),
                 )
             })?),
             None => None,
