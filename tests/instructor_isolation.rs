@@ -56,7 +56,17 @@ fn worker_entry() {
         return;
     };
     let mut patch = Patch::new(TaskId::SmithG1);
-    patch.misbehave = Some(misbehaviour(&name));
+    if name == "abort at alpha 0" {
+        // Fine on every graded value; only the stability case with α = 0 brings it down.
+        patch.smith_g1 = Some(|w, alpha| {
+            if alpha == 0.0 {
+                std::process::abort();
+            }
+            pbrlab::solutions::smith_g1::smith_g1(w, alpha)
+        });
+    } else {
+        patch.misbehave = Some(misbehaviour(&name));
+    }
     pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
 }
 
@@ -129,6 +139,28 @@ fn an_early_exit_is_detected() {
 #[test]
 fn a_forged_result_line_is_ignored() {
     only_smith_g1_fails("forge", "exited early with status 0");
+}
+
+#[test]
+fn a_crash_names_the_check_it_stopped_and_keeps_the_finished_ones() {
+    let report = grade_with("abort at alpha 0", ImplChoice::Student);
+    let g1 = report.task("smith_g1").expect("graded");
+    let TaskStatus::Crashed { reason } = &g1.status else {
+        panic!("smith_g1 is {:?}", g1.status);
+    };
+    assert!(
+        reason.contains("aborted") && reason.contains("while running stability: smith_g1/"),
+        "{reason}"
+    );
+    assert_eq!(g1.points, 0.0);
+    let values = g1.checks.iter().find(|c| c.name == "values");
+    assert!(values.is_some_and(|c| c.passed), "{:?}", g1.checks);
+    assert!(g1.checks.iter().all(|c| c.name != "stability"));
+    let text = pbrlab::grade::report::details(g1);
+    assert!(
+        text.contains("finished before that:\n    ✓ values"),
+        "{text}"
+    );
 }
 
 #[test]

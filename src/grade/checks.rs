@@ -47,27 +47,63 @@ pub struct TaskInput {
     pub seed: u64,
 }
 
+/// What grading a task reports as it goes, so that a worker that dies part-way through can
+/// say where, and the checks that finished before are not lost.
+#[derive(Debug)]
+pub enum Progress<'a> {
+    /// A check (or one stability case within the stability check) is about to run.
+    Starting(&'a str),
+    /// A check has finished.
+    Finished(&'a CheckResult),
+}
+
+/// Where grading reports its [`Progress`].
+pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
+
 /// Runs every check of `task` on `t`.
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
+    grade_task_reporting(t, task, input, &mut |_| {})
+}
+
+/// [`grade_task`], telling `progress` before each check (and each stability case) runs and
+/// after each check finishes.
+pub fn grade_task_reporting<T: Tasks>(
+    t: &T,
+    task: TaskId,
+    input: &TaskInput,
+    progress: &mut ProgressSink<'_>,
+) -> Vec<CheckResult> {
     let mut checks = Vec::new();
+    let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
+        progress(Progress::Starting(name));
+        let result = check(progress);
+        progress(Progress::Finished(&result));
+        checks.push(result);
+    };
     let data = input.data.clone().unwrap_or_default();
     if !data.values.is_empty() {
-        checks.push(values::run("values", &data.values, Visibility::Visible, t));
+        record("values", &mut |_| {
+            values::run("values", &data.values, Visibility::Visible, t)
+        });
     }
     if !input.hidden.is_empty() {
-        checks.push(values::run(
-            "values (hidden cases)",
-            &input.hidden,
-            Visibility::Hidden,
-            t,
-        ));
+        record("values (hidden cases)", &mut |_| {
+            values::run(
+                "values (hidden cases)",
+                &input.hidden,
+                Visibility::Hidden,
+                t,
+            )
+        });
     }
     let estimators = catalogue::estimators(task, t);
     let statistical = data.sampling.len() + estimators.len();
     let alpha = sidak(TASK_ALPHA, statistical);
     for (i, case) in data.sampling.iter().enumerate() {
         let seed = (input.seed, 100 + i as u64);
-        checks.push(sampling_check(t, &case.call, &case.target, alpha, seed));
+        record(&format!("sampling: {}", case.call), &mut |_| {
+            sampling_check(t, &case.call, &case.target, alpha, seed)
+        });
     }
     #[cfg(feature = "solutions")]
     let mut reference: Vec<Option<EstimatorSpec<'_>>> =
@@ -79,19 +115,28 @@ pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<Check
     let mut reference: Vec<Option<EstimatorSpec<'_>>> = Vec::new();
     reference.resize_with(estimators.len(), || None);
     for (i, (spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
-        checks.push(estimator_check(
-            spec,
-            reference,
-            alpha,
-            (input.seed, 200 + i as u64),
-        ));
+        let name = format!("estimator: {}", spec.name);
+        let mut pair = Some((spec, reference));
+        record(&name, &mut |_| {
+            let (spec, reference) = pair.take().expect("each estimator runs once");
+            estimator_check(spec, reference, alpha, (input.seed, 200 + i as u64))
+        });
     }
     for (i, (a, b)) in catalogue::unit_pairs(task, t).into_iter().enumerate() {
-        checks.push(units_check(a, b, (input.seed, 300 + i as u64)));
+        let name = format!("estimator: variance independent of units ({})", b.name);
+        let mut pair = Some((a, b));
+        record(&name, &mut |_| {
+            let (a, b) = pair.take().expect("each pair runs once");
+            units_check(a, b, (input.seed, 300 + i as u64))
+        });
     }
     let cases = crate::stability::cases_for::<T>(task);
     if !cases.is_empty() {
-        checks.push(stability::run(t, &cases));
+        record("stability", &mut |progress| {
+            stability::run(t, &cases, &mut |case| {
+                progress(Progress::Starting(&format!("stability: {case}")))
+            })
+        });
     }
     spread_weights(&mut checks);
     checks

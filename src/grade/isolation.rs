@@ -1,7 +1,8 @@
 //! The parent side of isolation: starts a worker process for one job, feeds it the job,
 //! enforces the time limit, and turns whatever happened into a result or a crash report.
 
-use super::worker::{Job, RESULT_MARKER, Record, STARTED_MARKER};
+use super::verdict::CheckResult;
+use super::worker::{CHECK_MARKER, Job, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
@@ -79,6 +80,31 @@ pub struct WorkerRun {
     pub output: String,
     /// Wall time, in seconds.
     pub seconds: f64,
+    /// The last step (check or stability case) the worker announced: where it was when it
+    /// crashed or ran out of time.
+    pub step: Option<String>,
+    /// The checks that finished, kept for a worker that dies later.
+    pub finished: Vec<CheckResult>,
+}
+
+impl WorkerRun {
+    /// A run that produced nothing, for `failure`.
+    pub fn failed(failure: WorkerFailure) -> Self {
+        Self {
+            outcome: Err(failure),
+            output: String::new(),
+            seconds: 0.0,
+            step: None,
+            finished: Vec::new(),
+        }
+    }
+}
+
+/// The text after `marker` and `nonce` on `line`, when the line has both.
+fn marked<'l>(line: &'l str, marker: &str, nonce: &str) -> Option<&'l str> {
+    let rest = line.strip_prefix(marker)?.strip_prefix(' ')?;
+    let rest = rest.strip_prefix(nonce)?;
+    Some(rest.strip_prefix(' ').unwrap_or(rest))
 }
 
 /// Keep at most this much of the student's output.
@@ -96,14 +122,10 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     let mut child = match spawned {
         Ok(child) => child,
         Err(e) => {
-            return WorkerRun {
-                outcome: Err(WorkerFailure::Grader(format!(
-                    "could not start the worker {}: {e}",
-                    launcher.program.display()
-                ))),
-                output: String::new(),
-                seconds: 0.0,
-            };
+            return WorkerRun::failed(WorkerFailure::Grader(format!(
+                "could not start the worker {}: {e}",
+                launcher.program.display()
+            )));
         }
     };
     let payload = serde_json::to_vec(job).unwrap_or_default();
@@ -114,30 +136,24 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     let nonce = job.nonce.clone();
     let stdout = child.stdout.take().map(|out| {
         std::thread::spawn(move || {
-            let (mut record, mut started) = (None, false);
-            let mut printed = String::new();
+            let mut seen = Seen::default();
             for line in BufReader::new(out).lines() {
                 let Ok(line) = line else { break };
-                if line
-                    .strip_prefix(STARTED_MARKER)
-                    .is_some_and(|rest| rest.trim() == nonce)
-                {
-                    started = true;
-                    continue;
-                }
-                if let Some(rest) = line.strip_prefix(RESULT_MARKER) {
-                    let rest = rest.trim_start();
-                    if let Some(json) = rest.strip_prefix(nonce.as_str()) {
-                        record = Some(serde_json::from_str::<Record>(json.trim()));
-                        continue;
-                    }
-                }
-                if printed.len() < OUTPUT_LIMIT && !line.is_empty() {
-                    printed.push_str(&line);
-                    printed.push('\n');
+                if marked(&line, STARTED_MARKER, &nonce).is_some() {
+                    seen.started = true;
+                } else if let Some(json) = marked(&line, RESULT_MARKER, &nonce) {
+                    seen.record = Some(serde_json::from_str::<Record>(json.trim()));
+                } else if let Some(step) = marked(&line, STEP_MARKER, &nonce) {
+                    seen.step = Some(step.trim().to_owned());
+                } else if let Some(json) = marked(&line, CHECK_MARKER, &nonce) {
+                    seen.finished
+                        .extend(serde_json::from_str::<CheckResult>(json.trim()));
+                } else if seen.printed.len() < OUTPUT_LIMIT && !line.is_empty() {
+                    seen.printed.push_str(&line);
+                    seen.printed.push('\n');
                 }
             }
-            (record, started, printed)
+            seen
         })
     });
     let stderr = child.stderr.take().map(|err| {
@@ -150,10 +166,13 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
         })
     });
     let status = wait(&mut child, timeout);
-    let (record, started, printed) =
-        stdout
-            .and_then(|h| h.join().ok())
-            .unwrap_or((None, false, String::new()));
+    let Seen {
+        record,
+        started,
+        printed,
+        step,
+        finished,
+    } = stdout.and_then(|h| h.join().ok()).unwrap_or_default();
     let errors = stderr.and_then(|h| h.join().ok()).unwrap_or_default();
     let seconds = start.elapsed().as_secs_f64();
     let mut output = printed;
@@ -187,7 +206,19 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
         outcome,
         output,
         seconds,
+        step,
+        finished,
     }
+}
+
+/// What the worker's stdout held: its marked lines, and the rest as its output.
+#[derive(Default)]
+struct Seen {
+    record: Option<serde_json::Result<Record>>,
+    started: bool,
+    printed: String,
+    step: Option<String>,
+    finished: Vec<CheckResult>,
 }
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {

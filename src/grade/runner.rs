@@ -123,12 +123,10 @@ fn run_all(
         .unwrap_or_default()
         .into_iter()
         .map(|r| {
-            r.unwrap_or(isolation::WorkerRun {
-                outcome: Err(isolation::WorkerFailure::Grader(
+            r.unwrap_or_else(|| {
+                isolation::WorkerRun::failed(isolation::WorkerFailure::Grader(
                     "the worker thread did not report".into(),
-                )),
-                output: String::new(),
-                seconds: 0.0,
+                ))
             })
         })
         .collect()
@@ -405,7 +403,11 @@ pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
             (TaskStatus::GraderError { message }, 0.0, Vec::new())
         }
         Err(isolation::WorkerFailure::Student(reason)) => {
-            (TaskStatus::Crashed { reason }, 0.0, Vec::new())
+            let reason = match &run.step {
+                Some(step) => format!("{reason}, while running {step}"),
+                None => reason,
+            };
+            (TaskStatus::Crashed { reason }, 0.0, run.finished)
         }
     };
     let max_points = if status == TaskStatus::NoChecks {

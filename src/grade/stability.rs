@@ -12,12 +12,14 @@ use crate::stability::{Case, Verdict};
 use crate::worksheet::Tasks;
 use std::time::Instant;
 
-/// Runs every case on `t`, each isolated from panics, into one check.
-pub fn run<T: Tasks>(t: &T, cases: &[Case<T>]) -> CheckResult {
+/// Runs every case on `t`, each isolated from panics, into one check; `starting` hears each
+/// case's name before it runs.
+pub fn run<T: Tasks>(t: &T, cases: &[Case<T>], starting: &mut dyn FnMut(&str)) -> CheckResult {
     let start = Instant::now();
     let mut result = CheckResult::new("stability", CheckKind::Stability);
     result.total = cases.len();
     for case in cases {
+        starting(case.name);
         let context = format!("{} [{}]", case.input, case.name);
         match panics::catch(|| (case.eval)(t)) {
             Ok(value) => {

@@ -8,7 +8,7 @@
 //! grader accepts only a line with its nonce, and treats a worker that exits without one as
 //! having crashed.
 
-use super::checks::{TaskInput, grade_task};
+use super::checks::{Progress, ProgressSink, TaskInput, grade_task_reporting};
 use super::panics;
 use super::verdict::CheckResult;
 use crate::worksheet::{TaskId, Tasks};
@@ -18,6 +18,15 @@ use std::io::{Read, Write};
 
 /// The marker that starts the result line.
 pub const RESULT_MARKER: &str = "PBRLAB-RESULT";
+
+/// The marker of the line a worker prints before each check (and each stability case)
+/// runs, followed by the nonce and the check's name: when the worker dies, the last such
+/// line says where.
+pub const STEP_MARKER: &str = "PBRLAB-STEP";
+
+/// The marker of the line a worker prints when a check finishes, followed by the nonce and
+/// the check as JSON: when the worker dies later, the checks that finished are kept.
+pub const CHECK_MARKER: &str = "PBRLAB-CHECK";
 
 /// The marker of the line a worker prints once it has its job, before any student code
 /// runs: a worker that ends without it failed to start (the grader's fault, not the code's).
@@ -113,12 +122,12 @@ pub enum Record {
     },
 }
 
-/// Runs a job on the implementation `t`.
-pub fn run_job<T: Tasks>(t: &T, kind: &JobKind) -> Record {
+/// Runs a job on the implementation `t`, telling `progress` how a grading job goes.
+pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>) -> Record {
     let task_of = |name: &str| TaskId::parse(name).map_err(|e| anyhow!(e));
     let result = match kind {
         JobKind::Grade { task, input } => task_of(task).map(|task| Record::Checks {
-            checks: grade_task(t, task, input),
+            checks: grade_task_reporting(t, task, input, progress),
         }),
         JobKind::Render {
             scene,
@@ -184,8 +193,23 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
         let _ = writeln!(out, "\n{STARTED_MARKER} {}", job.nonce);
         let _ = out.flush();
     }
+    let nonce = job.nonce.clone();
+    let mut progress = |p: Progress<'_>| {
+        let line = match p {
+            Progress::Starting(name) => {
+                format!("{STEP_MARKER} {nonce} {}", name.replace('\n', " "))
+            }
+            Progress::Finished(check) => match serde_json::to_string(check) {
+                Ok(json) => format!("{CHECK_MARKER} {nonce} {json}"),
+                Err(_) => return,
+            },
+        };
+        let mut out = std::io::stdout().lock();
+        let _ = writeln!(out, "\n{line}");
+        let _ = out.flush();
+    };
     let record = match limit_memory(job.memory_limit).and_then(|()| make(&job.implementation)) {
-        Ok(t) => run_job(&t, &job.kind),
+        Ok(t) => run_job(&t, &job.kind, &mut progress),
         Err(e) => Record::Error {
             message: format!("{e:#}"),
         },

@@ -68,6 +68,16 @@ pub fn details(t: &TaskOutcome) -> String {
     match &t.status {
         TaskStatus::Crashed { reason } => {
             let _ = writeln!(s, "  the code {reason}");
+            if !t.checks.is_empty() {
+                let _ = writeln!(s, "  finished before that:");
+            }
+            for c in &t.checks {
+                let _ = if c.passed {
+                    writeln!(s, "    ✓ {}", c.name)
+                } else {
+                    writeln!(s, "    ✗ {}: {}", c.name, c.summary)
+                };
+            }
         }
         TaskStatus::GraderError { message } => {
             let _ = writeln!(
