@@ -12,7 +12,9 @@ use instructor_support::patch::Patch;
 use pbrlab::grade::isolation::Launcher;
 use pbrlab::grade::runner::{GradeOptions, grade};
 use pbrlab::grade::verdict::{GradeReport, TaskStatus};
+use pbrlab::grade::worker::ImplSpec;
 use pbrlab::implementation::ImplChoice;
+use pbrlab::stability::Verdict;
 use pbrlab::worksheet::TaskId;
 use std::hint::black_box;
 use std::time::Duration;
@@ -70,14 +72,19 @@ fn worker_entry() {
     pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
 }
 
-fn grade_with(misbehaviour: &str, implementation: ImplChoice) -> GradeReport {
-    let launcher = Launcher {
+/// Workers that are this test binary, serving the reference with `misbehaviour`.
+fn launcher(misbehaviour: &str) -> Launcher {
+    Launcher {
         program: std::env::current_exe().expect("test binary path"),
         args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
             .map(String::from)
             .to_vec(),
         env: vec![(WORKER.into(), misbehaviour.into())],
-    };
+    }
+}
+
+fn grade_with(misbehaviour: &str, implementation: ImplChoice) -> GradeReport {
+    let launcher = launcher(misbehaviour);
     let options = GradeOptions {
         tasks: vec![TaskId::Reflect, TaskId::SmithG1, TaskId::CookTorrance],
         implementation,
@@ -160,6 +167,46 @@ fn a_crash_names_the_check_it_stopped_and_keeps_the_finished_ones() {
     assert!(
         text.contains("finished before that:\n    ✓ values"),
         "{text}"
+    );
+}
+
+#[test]
+fn the_stability_command_reports_a_crashing_case_and_runs_the_others() {
+    let launcher = launcher("abort at alpha 0");
+    let outcomes = pbrlab::stability::run_isolated(
+        &launcher,
+        &ImplSpec::Student,
+        TaskId::SmithG1,
+        Duration::from_secs(4),
+    )
+    .expect("the workers run");
+    assert!(outcomes.len() > 3);
+    for o in &outcomes {
+        // Both cases with α = 0 bring their worker down; each is reported on its own.
+        if o.case.ends_with("alpha_zero") {
+            assert_eq!(o.verdict, Verdict::Crash, "{o:?}");
+            assert!(
+                o.message.as_deref().is_some_and(|m| m.contains("aborted")),
+                "{o:?}"
+            );
+        } else {
+            assert_eq!(o.verdict, Verdict::Pass, "{o:?}");
+        }
+    }
+}
+
+#[test]
+fn the_stability_command_reports_a_case_that_never_returns_as_a_hang() {
+    let outcomes = pbrlab::stability::run_isolated(
+        &launcher("loop"),
+        &ImplSpec::Student,
+        TaskId::SmithG1,
+        Duration::from_millis(300),
+    )
+    .expect("the workers run");
+    assert!(
+        outcomes.iter().all(|o| o.verdict == Verdict::Hang),
+        "{outcomes:?}"
     );
 }
 

@@ -1,8 +1,10 @@
 //! `pbrlab stability`: every task on stiff and extreme inputs, as a table or JSON.
 
-use crate::implementation::{ImplChoice, Student};
-use crate::stability::{Case, Outcome, Verdict, cases_for, run_cases};
-use crate::worksheet::{TaskId, Tasks};
+use crate::grade::isolation::Launcher;
+use crate::grade::worker::ImplSpec;
+use crate::implementation::ImplChoice;
+use crate::stability::{Outcome, Verdict, run_isolated};
+use crate::worksheet::TaskId;
 use anyhow::{anyhow, bail};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -36,6 +38,10 @@ pub struct Args {
 
 /// Runs the catalogue on the chosen implementation and prints the verdicts. Fails (exit
 /// status 1) when any attempted case does not pass.
+///
+/// Each case runs in a worker process of its own (the grader's `grade-worker`), so a case
+/// that overflows the stack or aborts is reported as a crash and every other case still
+/// runs; the rows of a task are printed as soon as its cases are done.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let tasks = selected_tasks(&args.tasks)?;
     if !(args.timeout > 0.0 && args.timeout.is_finite()) {
@@ -45,17 +51,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     let timeout = Duration::from_secs_f64(args.timeout);
-    match args.implementation {
-        ImplChoice::Student => report(Student, "student", &tasks, timeout, args.format, &[]),
+    let (spec, label, reference_tasks) = match args.implementation {
+        ImplChoice::Student => (ImplSpec::Student, "student", Vec::new()),
         #[cfg(feature = "solutions")]
-        ImplChoice::Reference => report(
-            crate::implementation::Reference,
-            "reference",
-            &tasks,
-            timeout,
-            args.format,
-            &[],
-        ),
+        ImplChoice::Reference => (ImplSpec::Reference, "reference", Vec::new()),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
             let student = crate::implementation::student_attempted();
@@ -64,14 +63,32 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 .copied()
                 .filter(|t| !student.contains(*t))
                 .collect();
-            let imp = crate::implementation::Mixed::new(student);
-            report(imp, "mixed", &tasks, timeout, args.format, &reference)
+            let spec = ImplSpec::Mixed {
+                student: student.iter().map(|t| t.name().to_owned()).collect(),
+            };
+            (spec, "mixed", reference)
         }
         #[cfg(not(feature = "solutions"))]
         ImplChoice::Reference | ImplChoice::Mixed => {
             bail!("this build has no reference solutions; use --impl student")
         }
+    };
+    let launcher = Launcher::current_exe()?;
+    if args.format == Format::Text {
+        println!(
+            "{:<44} {:<15} {:<36} {:<36} verdict",
+            "case", "task", "value", "expected"
+        );
     }
+    let mut outcomes = Vec::new();
+    for &task in &tasks {
+        let task_outcomes = run_isolated(&launcher, &spec, task, timeout)?;
+        if args.format == Format::Text {
+            task_outcomes.iter().for_each(print_row);
+        }
+        outcomes.extend(task_outcomes);
+    }
+    report(&outcomes, label, args.format, &reference_tasks)
 }
 
 fn selected_tasks(names: &[String]) -> anyhow::Result<Vec<TaskId>> {
@@ -93,30 +110,15 @@ struct JsonReport<'a> {
     outcomes: &'a [Outcome],
 }
 
-fn report<T>(
-    imp: T,
+/// The summary line (text) or the whole report (JSON); an error when a case failed.
+fn report(
+    outcomes: &[Outcome],
     label: &str,
-    tasks: &[TaskId],
-    timeout: Duration,
     format: Format,
     reference_tasks: &[TaskId],
-) -> anyhow::Result<()>
-where
-    T: Tasks + Clone + Send + 'static,
-{
-    let cases: Vec<Case<T>> = tasks.iter().flat_map(|&t| cases_for::<T>(t)).collect();
-    let outcomes = match format {
-        Format::Text => {
-            println!(
-                "{:<44} {:<15} {:<36} {:<36} verdict",
-                "case", "task", "value", "expected"
-            );
-            run_cases(&cases, &imp, timeout, print_row)
-        }
-        Format::Json => run_cases(&cases, &imp, timeout, |_| {}),
-    };
+) -> anyhow::Result<()> {
     let mut summary: BTreeMap<&'static str, usize> = BTreeMap::new();
-    for o in &outcomes {
+    for o in outcomes {
         *summary.entry(o.verdict.label()).or_default() += 1;
     }
     match format {
@@ -140,7 +142,7 @@ where
                 implementation: label,
                 reference_tasks: reference_tasks.iter().map(|t| t.name()).collect(),
                 summary,
-                outcomes: &outcomes,
+                outcomes,
             };
             println!("{}", serde_json::to_string_pretty(&doc)?);
         }
@@ -163,9 +165,9 @@ fn print_row(o: &Outcome) {
         o.verdict
     );
     if let Some(message) = &o.message {
-        println!("    panic: {message}");
+        println!("    {}: {message}", o.verdict);
     }
-    if o.verdict.failed() && o.verdict != Verdict::Panic {
+    if o.verdict.failed() && !matches!(o.verdict, Verdict::Panic | Verdict::Crash) {
         println!("    input: {}\n    guard: {}", o.input, o.guard);
     }
 }

@@ -95,22 +95,33 @@ fn hidden_cases(_task: TaskId, _seed: u64) -> anyhow::Result<Vec<super::case::Va
     bail!("hidden cases are computed by the reference, which this build does not have")
 }
 
-/// Runs `jobs` at most `parallel` at a time, in order of the input.
+/// Runs `jobs` with `options.jobs` workers at a time and `options.timeout` each.
 fn run_all(
     launcher: &Launcher,
     jobs: Vec<Job>,
     options: &GradeOptions,
 ) -> Vec<isolation::WorkerRun> {
+    run_jobs(launcher, &jobs, options.jobs, options.timeout)
+}
+
+/// Runs each of `jobs` in its own worker, at most `parallel` at a time, each stopped after
+/// `timeout`; the runs come back in the order of the jobs.
+pub fn run_jobs(
+    launcher: &Launcher,
+    jobs: &[Job],
+    parallel: usize,
+    timeout: Duration,
+) -> Vec<isolation::WorkerRun> {
     let next = AtomicUsize::new(0);
     let results: Mutex<Vec<Option<isolation::WorkerRun>>> =
         Mutex::new((0..jobs.len()).map(|_| None).collect());
     std::thread::scope(|scope| {
-        for _ in 0..options.jobs.max(1).min(jobs.len().max(1)) {
+        for _ in 0..parallel.max(1).min(jobs.len().max(1)) {
             scope.spawn(|| {
                 loop {
                     let i = next.fetch_add(1, Ordering::Relaxed);
                     let Some(job) = jobs.get(i) else { break };
-                    let run = isolation::run(launcher, job, options.timeout);
+                    let run = isolation::run(launcher, job, timeout);
                     if let Ok(mut results) = results.lock() {
                         results[i] = Some(run);
                     }
@@ -364,6 +375,9 @@ fn job_task(job: &Job) -> TaskId {
             TaskId::parse(task).unwrap_or(TaskId::Reflect)
         }
         JobKind::Render { .. } => TaskId::PathTrace,
+        JobKind::Stability { case } => {
+            TaskId::parse(case.split('/').next().unwrap_or_default()).unwrap_or(TaskId::Reflect)
+        }
     }
 }
 
@@ -392,9 +406,9 @@ pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
             let (status, points) = score(task, &checks);
             (status, points, checks)
         }
-        Ok(Record::Attempted { .. }) => (
+        Ok(Record::Attempted { .. } | Record::Stability { .. }) => (
             TaskStatus::GraderError {
-                message: "the worker answered a probe instead of grading".into(),
+                message: "the worker answered another job instead of grading".into(),
             },
             0.0,
             Vec::new(),

@@ -11,6 +11,7 @@
 use super::checks::{Progress, ProgressSink, TaskInput, grade_task_reporting};
 use super::panics;
 use super::verdict::CheckResult;
+use crate::stability::runner::CaseResult;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::{Context, anyhow};
 use serde::{Deserialize, Serialize};
@@ -77,6 +78,12 @@ pub enum JobKind {
         /// The task id.
         task: String,
     },
+    /// Run one case of the stability catalogue (`pbrlab stability` runs each in a worker,
+    /// so a case that crashes its process is reported and the others still run).
+    Stability {
+        /// The case's name (`smith_g1/alpha_zero`).
+        case: String,
+    },
     /// Render a scene and compare it with the stored reference render.
     Render {
         /// The scene's name (see [`super::renders::RENDER_CHECKS`]).
@@ -115,6 +122,11 @@ pub enum Record {
         /// True unless the task still stops at its `todo!()`.
         attempted: bool,
     },
+    /// The result of a stability case.
+    Stability {
+        /// What the case gave.
+        result: CaseResult,
+    },
     /// The worker could not run the job (not the student's fault).
     Error {
         /// What went wrong.
@@ -141,6 +153,13 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
                 report_dir.as_deref(),
             )],
         }),
+        JobKind::Stability { case } => crate::stability::cases::<T>()
+            .iter()
+            .find(|c| c.name == case)
+            .map(|c| Record::Stability {
+                result: crate::stability::runner::evaluate_case(c, t),
+            })
+            .ok_or_else(|| anyhow!("the stability catalogue has no case `{case}`")),
         JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
             attempted: match panics::catch(|| super::probe::probe_task(t, task)) {
                 Ok(()) => true,

@@ -9,7 +9,7 @@ use super::verdict::Verdict;
 use crate::implementation::{is_todo_panic, panic_message};
 use crate::panic_hook::QuietPanics;
 use crate::worksheet::{TaskId, Tasks};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::{Duration, Instant};
@@ -57,11 +57,118 @@ fn serialize_task<S: serde::Serializer>(task: &TaskId, s: S) -> Result<S::Ok, S:
     s.serialize_str(task.name())
 }
 
-/// How a worker's call ended.
+/// How a call of a case ended.
 enum Ended {
     Returned(Value),
     Todo,
     Panicked(String),
+}
+
+/// Calls a case's evaluation on `imp` in this thread, catching panics.
+fn call<T: Tasks>(eval: fn(&T) -> Value, imp: &T) -> Ended {
+    match catch_unwind(AssertUnwindSafe(|| eval(imp))) {
+        Ok(value) => Ended::Returned(value),
+        Err(payload) if is_todo_panic(payload.as_ref()) => Ended::Todo,
+        Err(payload) => Ended::Panicked(
+            panic_message(payload.as_ref())
+                .unwrap_or("panic with a non-string payload")
+                .to_owned(),
+        ),
+    }
+}
+
+/// What a case gave, without the case's own (static) description: what a worker process
+/// sends back for one case.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaseResult {
+    /// The value, when the task returned one.
+    pub returned: Option<Returned>,
+    /// The value as a table shows it.
+    pub value_text: String,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// The panic message, for [`Verdict::Panic`].
+    pub message: Option<String>,
+    /// Wall-clock seconds.
+    pub seconds: f64,
+}
+
+/// A value the task returned (boxed so that a returned `None`, [`Value::Absent`], is told
+/// apart from no value at all).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Returned {
+    /// The value.
+    pub value: Value,
+}
+
+impl CaseResult {
+    /// Judges how the call of `case` ended.
+    fn judged<T>(case: &Case<T>, ended: Option<Ended>, elapsed: Duration) -> Self {
+        let (value, verdict, message) = match ended {
+            Some(Ended::Returned(v)) => {
+                let verdict = case.judge(&v);
+                (Some(v), verdict, None)
+            }
+            Some(Ended::Todo) => (None, Verdict::NotAttempted, None),
+            Some(Ended::Panicked(m)) => (None, Verdict::Panic, Some(m)),
+            None => (None, Verdict::Hang, None),
+        };
+        Self {
+            value_text: value
+                .as_ref()
+                .map_or_else(|| "—".to_owned(), |v| shown(case, v)),
+            returned: value.map(|value| Returned { value }),
+            verdict,
+            message,
+            seconds: elapsed.as_secs_f64(),
+        }
+    }
+
+    /// The result of a case that did not return within `seconds`.
+    pub fn hung(seconds: f64) -> Self {
+        Self {
+            returned: None,
+            value_text: "—".to_owned(),
+            verdict: Verdict::Hang,
+            message: None,
+            seconds,
+        }
+    }
+
+    /// The result of a case whose process died (`reason` says how) before it could report.
+    pub fn crashed(reason: String, seconds: f64) -> Self {
+        Self {
+            returned: None,
+            value_text: "—".to_owned(),
+            verdict: Verdict::Crash,
+            message: Some(reason),
+            seconds,
+        }
+    }
+
+    /// The full outcome, with the case's description.
+    pub fn outcome<T>(self, case: &Case<T>) -> Outcome {
+        Outcome {
+            task: case.task,
+            case: case.name,
+            input: case.input,
+            expected: case.expected_text(),
+            value: self.returned.map(|r| r.value),
+            value_text: self.value_text,
+            verdict: self.verdict,
+            message: self.message,
+            guard: case.guard,
+            seconds: self.seconds,
+        }
+    }
+}
+
+/// Runs one case on `imp` in this thread and judges it, with no time limit: for a process
+/// that is itself the isolation (the grader's worker), whose parent enforces the limit.
+pub fn evaluate_case<T: Tasks>(case: &Case<T>, imp: &T) -> CaseResult {
+    let start = Instant::now();
+    let ended = call(case.eval, imp);
+    CaseResult::judged(case, Some(ended), start.elapsed())
 }
 
 /// Runs one case on `imp` on its own thread and judges the result. A call that has not
@@ -83,54 +190,31 @@ where
         .stack_size(WORKER_STACK)
         .spawn(move || {
             let start = Instant::now();
-            let ended = match catch_unwind(AssertUnwindSafe(|| eval(&worker_imp))) {
-                Ok(value) => Ended::Returned(value),
-                Err(payload) if is_todo_panic(payload.as_ref()) => Ended::Todo,
-                Err(payload) => Ended::Panicked(
-                    panic_message(payload.as_ref())
-                        .unwrap_or("panic with a non-string payload")
-                        .to_owned(),
-                ),
-            };
+            let ended = call(eval, &worker_imp);
             // The receiver is gone only if the case already timed out.
             let _ = tx.send((ended, start.elapsed()));
         });
-    let received = match spawned {
-        Ok(_) => rx.recv_timeout(timeout),
-        Err(e) => Ok((
-            Ended::Panicked(format!("could not start a worker thread: {e}")),
-            Duration::ZERO,
-        )),
-    };
-    let (value, verdict, message, elapsed) = match received {
-        Ok((Ended::Returned(v), t)) => {
-            let verdict = case.judge(&v);
-            (Some(v), verdict, None, t)
-        }
-        Ok((Ended::Todo, t)) => (None, Verdict::NotAttempted, None, t),
-        Ok((Ended::Panicked(m), t)) => (None, Verdict::Panic, Some(m), t),
-        Err(RecvTimeoutError::Timeout) => (None, Verdict::Hang, None, timeout),
-        Err(RecvTimeoutError::Disconnected) => (
-            None,
-            Verdict::Panic,
-            Some("the worker thread ended without a result".into()),
+    let result = match spawned {
+        Ok(_) => match rx.recv_timeout(timeout) {
+            Ok((ended, t)) => CaseResult::judged(case, Some(ended), t),
+            Err(RecvTimeoutError::Timeout) => CaseResult::judged(case, None, timeout),
+            Err(RecvTimeoutError::Disconnected) => CaseResult::judged(
+                case,
+                Some(Ended::Panicked(
+                    "the worker thread ended without a result".into(),
+                )),
+                Duration::ZERO,
+            ),
+        },
+        Err(e) => CaseResult::judged(
+            case,
+            Some(Ended::Panicked(format!(
+                "could not start a worker thread: {e}"
+            ))),
             Duration::ZERO,
         ),
     };
-    Outcome {
-        task: case.task,
-        case: case.name,
-        input: case.input,
-        expected: case.expected_text(),
-        value_text: value
-            .as_ref()
-            .map_or_else(|| "—".to_owned(), |v| shown(case, v)),
-        value,
-        verdict,
-        message,
-        guard: case.guard,
-        seconds: elapsed.as_secs_f64(),
-    }
+    result.outcome(case)
 }
 
 /// Runs every case in order, calling `on_outcome` as each one finishes (so a caller can

@@ -1,4 +1,5 @@
 use glam::Vec3;
+use serde::de::{Deserialize, Deserializer};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// What a task function returned on one stability case, widened to f64 so f32 and f64
@@ -148,6 +149,43 @@ impl Serialize for Value {
     }
 }
 
+/// Reads what the `Serialize` impl writes (non-finite numbers from their strings).
+impl<'de> Deserialize<'de> for Value {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde_json::Value as Json;
+        let number = |v: &Json| -> Result<f64, String> {
+            match v {
+                Json::Number(n) => n.as_f64().ok_or_else(|| format!("not a number: {n}")),
+                Json::String(s) => match s.as_str() {
+                    "NaN" => Ok(f64::NAN),
+                    "inf" => Ok(f64::INFINITY),
+                    "-inf" => Ok(f64::NEG_INFINITY),
+                    other => Err(format!("not a number: {other}")),
+                },
+                other => Err(format!("not a number: {other}")),
+            }
+        };
+        let value = match Json::deserialize(d)? {
+            Json::Null => Ok(Value::Absent),
+            Json::Array(items) if items.len() == 3 => {
+                let mut v = [0.0; 3];
+                items
+                    .iter()
+                    .zip(&mut v)
+                    .try_for_each(|(item, slot)| number(item).map(|x| *slot = x))
+                    .map(|()| Value::Vector(v))
+            }
+            Json::Object(fields) => fields
+                .iter()
+                .map(|(name, x)| number(x).map(|x| (name.clone(), x)))
+                .collect::<Result<_, _>>()
+                .map(Value::Record),
+            other => number(&other).map(Value::Scalar),
+        };
+        value.map_err(serde::de::Error::custom)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -172,5 +210,20 @@ mod tests {
         assert_eq!(serde_json::to_string(&Value::Absent).unwrap(), "null");
         let r = Value::record([("pdf", 0.5)]);
         assert_eq!(serde_json::to_string(&r).unwrap(), r#"{"pdf":0.5}"#);
+    }
+
+    #[test]
+    fn json_round_trip_keeps_non_finite_numbers() {
+        for v in [
+            Value::Absent,
+            Value::Scalar(f64::NAN),
+            Value::Scalar(-2.5),
+            Value::Vector([1.0, f64::INFINITY, f64::NEG_INFINITY]),
+            Value::record([("pdf", 0.25), ("min_z", f64::NAN)]),
+        ] {
+            let json = serde_json::to_string(&v).expect("serialises");
+            let back: Value = serde_json::from_str(&json).expect("deserialises");
+            assert_eq!(back.to_string(), v.to_string(), "{json}");
+        }
     }
 }

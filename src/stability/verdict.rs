@@ -1,7 +1,7 @@
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// What a stability case concluded about one implementation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     /// Finite, in range, and the right value or limit.
@@ -21,6 +21,9 @@ pub enum Verdict {
     NotAttempted,
     /// The code did not return within the time limit.
     Hang,
+    /// The code brought its process down (a stack overflow, an abort, a memory fault):
+    /// only a case run in a process of its own can report this.
+    Crash,
 }
 
 impl Verdict {
@@ -46,6 +49,7 @@ impl Verdict {
             Verdict::Panic => "panic",
             Verdict::NotAttempted => "not attempted",
             Verdict::Hang => "hang",
+            Verdict::Crash => "crash",
         }
     }
 }
