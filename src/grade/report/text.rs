@@ -114,10 +114,54 @@ pub fn details(t: &TaskOutcome) -> String {
                 let _ = writeln!(s, "      … and {} more", c.failed - c.failures.len());
             }
         }
+        let chance: f64 = t
+            .checks
+            .iter()
+            .filter(|c| !c.passed && c.visibility == Visibility::Visible)
+            .map(|c| c.alpha)
+            .fold(0.0, f64::max);
+        if chance > 0.0 {
+            let _ = writeln!(
+                s,
+                "  (a statistical check: correct code fails it with probability {chance:.0e}; \
+                 if it fails again with another --seed, the error is real)"
+            );
+        }
     }
     if !t.output.trim().is_empty() && t.status != TaskStatus::Passed {
         let lines: Vec<&str> = t.output.lines().take(5).collect();
         let _ = writeln!(s, "  output:\n    {}", lines.join("\n    "));
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grade::verdict::{CheckKind, CheckResult, TaskOutcome};
+
+    fn failed_with(kind: CheckKind, alpha: f64) -> TaskOutcome {
+        let mut check = CheckResult::new("a check", kind);
+        check.total = 1;
+        check.alpha = alpha;
+        check.fail("case 1 is off".into());
+        check.finish();
+        TaskOutcome {
+            task: "cosine_sample".into(),
+            status: TaskStatus::Failed,
+            points: 0.0,
+            max_points: 8.0,
+            checks: vec![check],
+            output: String::new(),
+            seconds: 0.0,
+        }
+    }
+
+    #[test]
+    fn a_failed_statistical_check_says_how_often_correct_code_fails_it() {
+        let text = details(&failed_with(CheckKind::Sampling, 5e-4));
+        assert!(text.contains("probability 5e-4"), "{text}");
+        let text = details(&failed_with(CheckKind::Values, 0.0));
+        assert!(!text.contains("probability"), "{text}");
+    }
 }
