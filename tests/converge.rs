@@ -298,3 +298,32 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
         assert!(s.flattening(), "{}: {:?}", s.strategy, s.slope_spp);
     }
 }
+
+#[cfg(feature = "solutions")]
+#[test]
+fn each_finished_level_is_handed_over_for_saving() {
+    use pbrlab::converge::run_study_reporting;
+    use pbrlab::implementation::Reference;
+    let study = builtin("irradiance", Reference).unwrap();
+    let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
+    let config = StudyConfig {
+        min_spp: 1,
+        max_spp: 8,
+        seed: 3,
+    };
+    let mut saved: Vec<usize> = Vec::new();
+    let result = run_study_reporting(
+        &strategies,
+        &study.reference,
+        &config,
+        &ProgressBar::hidden(),
+        &mut |so_far| saved.push(so_far.points.len()),
+    )
+    .unwrap();
+    let per_level = strategies.len();
+    assert_eq!(
+        saved,
+        vec![per_level, 2 * per_level, 3 * per_level, 4 * per_level]
+    );
+    assert_eq!(saved.last(), Some(&result.points.len()));
+}

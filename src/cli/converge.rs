@@ -5,7 +5,7 @@ use crate::converge::csv::write_csv;
 use crate::converge::plot::plot_error_vs_time;
 use crate::converge::scene_study::{ReferenceSource, scene_study};
 use crate::converge::study::FLOOR_MARGIN;
-use crate::converge::{Strategy, Study, StudyConfig, Summary, run_study, summarise};
+use crate::converge::{Strategy, Study, StudyConfig, Summary, run_study_reporting, summarise};
 use crate::implementation::{ImplChoice, Student};
 use crate::scene::{LoadOptions, Scene};
 use crate::stability::value::format_number;
@@ -162,11 +162,24 @@ fn study_with<T: Tasks + Clone + Send + 'static>(
             .progress_chars("=> "),
     );
     let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
-    let result = run_study(&strategies, &study.reference, &config, &progress)?;
-    progress.finish_and_clear();
-
     let csv = args.out.join("converge.csv");
-    write_csv(&csv, &result.points)?;
+    // Saved after every level, so an interrupted study keeps the levels it finished.
+    let mut save_error = None;
+    let result = run_study_reporting(
+        &strategies,
+        &study.reference,
+        &config,
+        &progress,
+        &mut |so_far| {
+            if let Err(e) = write_csv(&csv, &so_far.points) {
+                save_error.get_or_insert(e);
+            }
+        },
+    )?;
+    progress.finish_and_clear();
+    if let Some(e) = save_error {
+        return Err(e);
+    }
     println!("{} (reference: {})", study.title, study.reference_note);
     if study.reference_floor > 0.0 {
         println!(

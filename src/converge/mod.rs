@@ -25,4 +25,7 @@ pub mod strategy;
 pub mod study;
 
 pub use strategy::{Estimate, Strategy};
-pub use study::{Failure, Point, Study, StudyConfig, StudyResult, Summary, run_study, summarise};
+pub use study::{
+    Failure, Point, Study, StudyConfig, StudyResult, Summary, run_study, run_study_reporting,
+    summarise,
+};

@@ -108,6 +108,18 @@ pub fn run_study(
     config: &StudyConfig,
     progress: &ProgressBar,
 ) -> Result<StudyResult> {
+    run_study_reporting(strategies, reference, config, progress, &mut |_| {})
+}
+
+/// [`run_study`], handing what has been measured so far to `level_done` after each level,
+/// so a caller can save it: a study stopped part-way keeps its finished levels.
+pub fn run_study_reporting(
+    strategies: &[&dyn Strategy],
+    reference: &[f32],
+    config: &StudyConfig,
+    progress: &ProgressBar,
+    level_done: &mut dyn FnMut(&StudyResult),
+) -> Result<StudyResult> {
     let levels = config.levels();
     progress.set_length((levels.len() * strategies.len()) as u64);
     let mut result = StudyResult::default();
@@ -157,6 +169,7 @@ pub fn run_study(
             });
             progress.inc(1);
         }
+        level_done(&result);
     }
     Ok(result)
 }
