@@ -31,7 +31,7 @@ pub mod light;
 pub mod math;
 pub mod medium;
 pub mod optics;
-pub mod panic_hook;
+pub mod panics;
 pub mod render;
 pub mod sampling;
 pub mod scene;

@@ -1,11 +1,11 @@
 use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, Student, probe_student};
+use crate::panics::QuietPanics;
 use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
 
 /// The scene `pbrlab render` renders when none is given.
 pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
@@ -234,33 +234,24 @@ impl Job<'_> {
 }
 
 /// Runs `f`, turning a panic (in task code, most likely) into an error that says where it
-/// happened and that the last saved estimate is kept.
+/// happened and that the last saved estimate is kept. The panic is re-raised on this thread
+/// by rayon; where it happened comes from the panic hook ([`QuietPanics`]), which also keeps
+/// a student panic from printing once per render thread.
 fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
-    let place: std::sync::Arc<Mutex<Option<String>>> = Default::default();
-    let hook = std::panic::take_hook();
-    let recorder = place.clone();
-    std::panic::set_hook(Box::new(move |info| {
-        let mut slot = recorder.lock().unwrap_or_else(|e| e.into_inner());
-        if slot.is_none() {
-            let message =
-                crate::implementation::panic_message(info.payload()).unwrap_or("(no message)");
-            let location = info.location().map_or("unknown place".to_string(), |l| {
-                format!("{}:{}", l.file(), l.line())
-            });
-            *slot = Some(format!("{location}: {message}"));
-        }
-    }));
+    let quiet = QuietPanics::new();
+    quiet.take_first();
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-    std::panic::set_hook(hook);
-    result.map_err(|_| {
-        let what = place
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .take()
-            .unwrap_or_else(|| "unknown place".into());
+    result.map_err(|payload| {
+        let what = match quiet.take_first() {
+            Some(p) => p.describe(),
+            None => format!(
+                "panicked: {}",
+                crate::implementation::panic_message(payload.as_ref()).unwrap_or("(no message)")
+            ),
+        };
         anyhow!(
-            "the render stopped: code panicked at {what}. The image of the last complete \
-             pass (if one completed) is kept."
+            "the render stopped: the code {what}. The image of the last complete pass (if one \
+             completed) is kept."
         )
     })
 }

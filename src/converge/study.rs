@@ -3,7 +3,7 @@ use super::fit::{Fit, log_log};
 use super::metrics::image_error;
 use super::strategy::Strategy;
 use crate::implementation::{is_todo_panic, panic_message};
-use crate::panic_hook::QuietPanics;
+use crate::panics::QuietPanics;
 use anyhow::{Context, Result};
 use indicatif::ProgressBar;
 use serde::Serialize;

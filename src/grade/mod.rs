@@ -31,7 +31,6 @@ pub mod image_check;
 pub mod isolation;
 pub mod lenient_f64;
 pub mod output;
-pub mod panics;
 pub mod probe;
 pub mod renders;
 pub mod report;

@@ -188,7 +188,7 @@ pub fn check<T: Tasks>(t: &T, scene: &str, seed: u64, report_dir: Option<&Path>)
         Ok(s) => s,
         Err(e) => return fail(format!("{e:#}")),
     };
-    let outcome = super::panics::catch(|| render_stats(&loaded, t, STUDENT_SPP, seed));
+    let outcome = crate::panics::catch(|| render_stats(&loaded, t, STUDENT_SPP, seed));
     let (student, rejected) = match outcome {
         Ok(r) => r,
         Err(p) => {

@@ -6,8 +6,8 @@
 //! here they run inside the grader's worker, so a case that hangs or crashes is covered by
 //! the worker's time limit instead of a thread per case.
 
-use super::panics;
 use super::verdict::{CheckKind, CheckResult};
+use crate::panics;
 use crate::stability::{Case, Verdict};
 use crate::worksheet::Tasks;
 use std::time::Instant;

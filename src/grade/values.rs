@@ -3,9 +3,9 @@
 
 use super::case::{Rule, ValueCase};
 use super::output::{Output, fmt_num};
-use super::panics;
 use super::tolerance::Error;
 use super::verdict::{CheckKind, CheckResult, Visibility, Worst};
+use crate::panics;
 use crate::worksheet::Tasks;
 use std::time::Instant;
 

@@ -2,8 +2,8 @@
 //! All of it is serialisable: a worker sends its checks to the grader as JSON, and the
 //! report is stored for `pbrlab tasks` and written for Gradescope.
 
-use super::panics::Panic;
 use super::tolerance::Error;
+use crate::panics::Panic;
 use serde::{Deserialize, Serialize};
 
 /// The kinds of check (DESIGN.md §4).

@@ -9,8 +9,8 @@
 //! having crashed.
 
 use super::checks::{Progress, ProgressSink, TaskInput, grade_task_reporting};
-use super::panics;
 use super::verdict::CheckResult;
+use crate::panics;
 use crate::stability::runner::CaseResult;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::{Context, anyhow};

@@ -7,7 +7,7 @@ use super::expect::Expect;
 use super::value::Value;
 use super::verdict::Verdict;
 use crate::implementation::{is_todo_panic, panic_message};
-use crate::panic_hook::QuietPanics;
+use crate::panics::QuietPanics;
 use crate::worksheet::{TaskId, Tasks};
 use serde::{Deserialize, Serialize};
 use std::panic::{AssertUnwindSafe, catch_unwind};

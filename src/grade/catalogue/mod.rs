@@ -25,8 +25,8 @@ mod smith_g1;
 
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
-use super::panics;
 use super::tolerance::Tolerance;
+use crate::panics;
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::bail;
