@@ -48,7 +48,7 @@ impl Default for GradeOptions {
             seed: DEFAULT_SEED,
             hidden_seed: None,
             timeout: Duration::from_secs(30),
-            memory_limit: 4 << 30,
+            memory_limit: DEFAULT_MEMORY_LIMIT,
             jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
             renders: true,
             report_dir: None,
@@ -94,6 +94,9 @@ fn hidden_cases(task: TaskId, seed: u64) -> anyhow::Result<Vec<super::case::Valu
 fn hidden_cases(_task: TaskId, _seed: u64) -> anyhow::Result<Vec<super::case::ValueCase>> {
     bail!("hidden cases are computed by the reference, which this build does not have")
 }
+
+/// The address-space limit of a worker unless told otherwise: 4 GiB.
+pub const DEFAULT_MEMORY_LIMIT: u64 = 4 << 30;
 
 /// Runs `jobs` with `options.jobs` workers at a time and `options.timeout` each.
 fn run_all(
@@ -217,6 +220,7 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
         Vec::new()
     };
     let mut jobs = Vec::new();
+    let mut graded = Vec::new();
     let mut outcomes = Vec::new();
     for &task in &options.tasks {
         let input = inputs.remove(&task).unwrap_or_default();
@@ -225,6 +229,7 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
             outcomes.push((task.name().to_string(), no_checks(task)));
             continue;
         }
+        graded.push(task);
         jobs.push(Job {
             nonce: isolation::nonce(),
             implementation: spec_for(task, options, &attempted)?,
@@ -235,8 +240,7 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
             memory_limit: options.memory_limit,
         });
     }
-    for (job, run) in jobs.iter().zip(run_all(launcher, jobs.clone(), options)) {
-        let task = job_task(job);
+    for (&task, run) in graded.iter().zip(run_all(launcher, jobs, options)) {
         outcomes.push((task.name().to_string(), outcome(task, run)));
     }
     outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
@@ -367,18 +371,6 @@ fn grade_renders(
             .position(|c| scene_entry(c.scene) == o.task)
     });
     results
-}
-
-fn job_task(job: &Job) -> TaskId {
-    match &job.kind {
-        JobKind::Grade { task, .. } | JobKind::Probe { task } => {
-            TaskId::parse(task).unwrap_or(TaskId::Reflect)
-        }
-        JobKind::Render { .. } => TaskId::PathTrace,
-        JobKind::Stability { case } => {
-            TaskId::parse(case.split('/').next().unwrap_or_default()).unwrap_or(TaskId::Reflect)
-        }
-    }
 }
 
 /// True when `task` has at least one check to run.

@@ -6,7 +6,7 @@
 use super::runner::CaseResult;
 use super::{Case, Outcome, cases_for};
 use crate::grade::isolation::{self, Launcher, WorkerFailure};
-use crate::grade::runner::{GradeOptions, run_jobs};
+use crate::grade::runner::{DEFAULT_MEMORY_LIMIT, run_jobs};
 use crate::grade::worker::{ImplSpec, Job, JobKind, Record};
 use crate::implementation::Student;
 use crate::worksheet::TaskId;
@@ -31,7 +31,7 @@ pub fn run_isolated(
             kind: JobKind::Stability {
                 case: case.name.to_owned(),
             },
-            memory_limit: GradeOptions::default().memory_limit,
+            memory_limit: DEFAULT_MEMORY_LIMIT,
         })
         .collect();
     // The limit covers the case, not the worker's start-up.

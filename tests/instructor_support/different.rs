@@ -2,29 +2,13 @@
 //! mapping, another use of the random numbers, another algebraic form. Every one must pass
 //! every task.
 
-use super::patch::Patch;
+use super::patch::{Patch, Variant, variant as different};
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::PlausibilityReport;
 use pbrlab::optics::{StackReport, fresnel_dielectric_f64};
 use pbrlab::sampling::Sampler;
 use pbrlab::worksheet::{TaskId, Tasks};
 use std::f32::consts::{FRAC_1_PI, PI, TAU};
-
-/// A correct implementation of one task.
-pub struct Different {
-    /// How it differs.
-    pub name: &'static str,
-    /// The task it implements.
-    pub task: TaskId,
-    /// The implementation.
-    pub patch: Patch,
-}
-
-fn different(name: &'static str, task: TaskId, set: impl FnOnce(&mut Patch)) -> Different {
-    let mut patch = Patch::new(task);
-    set(&mut patch);
-    Different { name, task, patch }
-}
 
 /// Shirley-Chiu concentric map of the unit square onto the unit disk.
 fn concentric_disk(u: Vec2) -> Vec2 {
@@ -41,7 +25,7 @@ fn concentric_disk(u: Vec2) -> Vec2 {
 }
 
 /// The catalogue.
-pub fn catalogue() -> Vec<Different> {
+pub fn catalogue() -> Vec<Variant> {
     use TaskId::*;
     vec![
         different("reflect with a normalised normal", Reflect, |p| {

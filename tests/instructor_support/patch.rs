@@ -105,6 +105,23 @@ impl Patch {
     }
 }
 
+/// One implementation of a test catalogue: the reference with `patch` applied.
+pub struct Variant {
+    /// How it differs from the reference.
+    pub name: &'static str,
+    /// The task it is about (the one a wrong variant must fail).
+    pub task: TaskId,
+    /// The implementation.
+    pub patch: Patch,
+}
+
+/// A variant of `task` named `name`, whose patch `set` fills in.
+pub fn variant(name: &'static str, task: TaskId, set: impl FnOnce(&mut Patch)) -> Variant {
+    let mut patch = Patch::new(task);
+    set(&mut patch);
+    Variant { name, task, patch }
+}
+
 macro_rules! pick {
     ($self:ident, $task:ident, $field:ident, |$f:ident| $patched:expr, $reference:expr) => {
         match $self.$field {

@@ -1,7 +1,7 @@
 //! Known-wrong implementations: the errata's traps and common slips, one task each. Every
 //! one must fail its own task and no other.
 
-use super::patch::Patch;
+use super::patch::{Variant, variant as wrong};
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::PlausibilityReport;
 use pbrlab::optics::schlick_weight;
@@ -10,22 +10,6 @@ use pbrlab::solutions as sol;
 use pbrlab::worksheet::{TaskId, Tasks};
 use std::f32::consts::{FRAC_1_PI, PI};
 
-/// A wrong implementation of one task.
-pub struct Wrong {
-    /// What is wrong.
-    pub name: &'static str,
-    /// The task it must fail.
-    pub task: TaskId,
-    /// The implementation.
-    pub patch: Patch,
-}
-
-fn wrong(name: &'static str, task: TaskId, set: impl FnOnce(&mut Patch)) -> Wrong {
-    let mut patch = Patch::new(task);
-    set(&mut patch);
-    Wrong { name, task, patch }
-}
-
 /// GGX D in Cartesian form with free roughnesses (for slips in other tasks).
 fn ggx(h: Vec3, ax: f32, ay: f32) -> f32 {
     sol::aniso_ndf::aniso_ndf(h, ax, ay)
@@ -33,13 +17,13 @@ fn ggx(h: Vec3, ax: f32, ay: f32) -> f32 {
 
 /// The catalogue: the closed-form tasks here, the integrator tasks in
 /// [`super::wrong_integrators`].
-pub fn catalogue() -> Vec<Wrong> {
+pub fn catalogue() -> Vec<Variant> {
     let mut all = closed_form();
     all.extend(super::wrong_integrators::catalogue());
     all
 }
 
-fn closed_form() -> Vec<Wrong> {
+fn closed_form() -> Vec<Variant> {
     use TaskId::*;
     vec![
         // reflect

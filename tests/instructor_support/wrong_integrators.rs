@@ -1,8 +1,7 @@
 //! Known-wrong `path_trace`, `mis` and `delta_tracking`: the worksheet's three code bugs as
 //! the errata demonstrate them, and the usual slips (roulette without dividing by q).
 
-use super::patch::Patch;
-use super::wrong::Wrong;
+use super::patch::{Patch, Variant, variant as wrong};
 use glam::Vec3;
 use pbrlab::bsdf::Bsdf;
 use pbrlab::geometry::{Hit, Ray};
@@ -262,14 +261,8 @@ fn tracking_variant(
     FreeFlight::Exhausted
 }
 
-fn wrong(name: &'static str, task: TaskId, set: impl FnOnce(&mut Patch)) -> Wrong {
-    let mut patch = Patch::new(task);
-    set(&mut patch);
-    Wrong { name, task, patch }
-}
-
 /// The catalogue.
-pub fn catalogue() -> Vec<Wrong> {
+pub fn catalogue() -> Vec<Variant> {
     use TaskId::*;
     vec![
         wrong(
