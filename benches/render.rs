@@ -12,10 +12,10 @@
 #[cfg(feature = "solutions")]
 mod render_benches {
     use criterion::{Criterion, Throughput, criterion_group};
-    use pbrlab::implementation::Reference;
     use pbrlab::render::raycast::{compare_with_obvhs, test_rays};
     use pbrlab::render::{RenderOptions, render};
     use pbrlab::scene::{LoadOptions, Scene};
+    use pbrlab_solutions::TASKS as Reference;
     use std::fmt::Write as _;
     use std::path::Path;
 

@@ -9,10 +9,10 @@
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::{KajiyaKayParams, PhongParams};
-use pbrlab::implementation::Reference;
 use pbrlab::optics::{LayerStack, Slab};
 use pbrlab::sampling::{Sampler, uniform_hemisphere, uniform_sphere};
 use pbrlab::worksheet::Tasks;
+use pbrlab_solutions::TASKS as Reference;
 use std::hint::black_box;
 use std::time::Duration;
 

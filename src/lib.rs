@@ -7,7 +7,16 @@
 //! ## Architecture
 //! - [`worksheet`]: the task table: every task's id, points, hints, and the [`Tasks`]
 //!   trait that lists every task function once. Conventions are stated there.
-//! - [`implementation`]: `Student` (exercises/), `Reference` (solutions/) and `Mixed`.
+//! - [`implementation`]: the task tables a binary links: the student's (the crate in
+//!   `exercises/`) and the reference's (the crate in `solutions/`), and mixes of the two.
+//!
+//! ## Crates
+//! This is the framework crate (`src/`). The student's code is its own small crate
+//! (`exercises/`, `pbrlab-exercises`) and the reference another (`solutions/`,
+//! `pbrlab-solutions`); each depends on this one and exports a
+//! [`TaskFns`](worksheet::TaskFns) table. The binaries (the root package) link the tables
+//! and [`install`](implementation::install) them, so this crate is compiled once and an
+//! exercise edit recompiles only `exercises/` and a link.
 //! - [`math`], [`sampling`], [`optics`], [`bsdf`]: framework pieces that are not tasks.
 //! - The renderer: [`scene`] (YAML scenes, validation, what a scene needs, and the
 //!   framework API integrators call), [`geometry`] (shapes, BVHs), [`light`], [`medium`],
@@ -39,16 +48,6 @@ pub mod stability;
 pub mod task_set;
 pub mod worksheet;
 
-/// The student's exercises: one file per task, each a stub to fill in.
-#[allow(unused_variables)]
-#[path = "../exercises/mod.rs"]
-pub mod exercises;
-
-/// The reference solutions: one file per task, mirroring `exercises/`.
-#[cfg(feature = "solutions")]
-#[path = "../solutions/mod.rs"]
-pub mod solutions;
-
 /// What a task file needs in scope: vectors, the task trait, the parameter types.
 pub mod prelude {
     pub use crate::bsdf::{Bsdf, BsdfSample, KajiyaKayParams, PhongParams, PlausibilityReport};
@@ -61,4 +60,11 @@ pub mod prelude {
     pub use crate::scene::Scene;
     pub use crate::worksheet::Tasks;
     pub use glam::{Vec2, Vec3};
+}
+
+/// The repository this framework was built from (the workspace root, one folder above the
+/// framework's `src/`): where `scenes/`, `exercises/` and `.pbrlab/` are found by default.
+pub fn repository_root() -> &'static std::path::Path {
+    let framework = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    framework.parent().unwrap_or(framework)
 }

@@ -14,11 +14,13 @@
 //!
 //! # How an implementation is put together
 //! The `tasks!` invocation at the bottom of this file lists every task function once. It
-//! generates the [`Tasks`] trait and its implementations: [`crate::implementation::Student`]
-//! (the code in `exercises/`), `Reference` (the code in `solutions/`) and `Mixed` (a
-//! per-task choice). Task functions that build on other tasks take `t: &impl Tasks` as their
-//! first argument and call the other tasks through it, so the grader can grade one task with
-//! the reference standing in for the others, and `--impl mixed` can combine the two.
+//! generates the [`Tasks`] trait and the function table [`TaskFns`] that implements it.
+//! The student's crate (`exercises/`) and the reference's crate (`solutions/`) each export
+//! a `TaskFns` built by [`task_table!`](crate::task_table); [`crate::implementation`] holds
+//! the ones a binary links. Task functions that build on other tasks take `t: &impl Tasks`
+//! as their first argument and call the other tasks through it, so the grader can grade one
+//! task with the reference standing in for the others, and `--impl mixed` can combine the
+//! two ([`TaskFns::with_task`]).
 
 use crate::bsdf::{KajiyaKayParams, PhongParams, PlausibilityReport};
 use crate::geometry::{Hit, Ray};
@@ -432,7 +434,8 @@ pub static TASKS: [TaskInfo; 15] = [
     },
 ];
 
-/// Generates the [`Tasks`] trait and its implementations from one list of task functions.
+/// Generates the [`Tasks`] trait, the function table [`TaskFns`] and its macro
+/// [`task_table!`](crate::task_table) from one list of task functions.
 ///
 /// Each entry is `module: Variant { fn name(args) -> Ret; … }`: the file
 /// `exercises/module.rs` (and `solutions/module.rs`) defines each listed function with the
@@ -452,28 +455,9 @@ macro_rules! tasks {
         /// and the convergence study are generic over.
         ///
         /// Conventions are those of [`crate::worksheet`]: directions point away from the
-        /// surface; in the local frame the normal is +z.
-        ///
-        /// With the `solutions` feature every method defaults to the reference, so a test
-        /// implementation (a known-wrong variant, a correct-but-different one) overrides only
-        /// the functions it changes; calls it does not override reach the reference with the
-        /// test implementation as `t`, so its change propagates as a student's would.
-        #[cfg(feature = "solutions")]
-        pub trait Tasks: Sync + Sized {
-            $($(
-                $(#[$doc])*
-                fn $name(&self, $($arg: $ty),*) -> $ret {
-                    crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
-                }
-            )+)+
-        }
-
-        /// Every task function of the worksheet: the interface the renderer and the grader
-        /// are generic over (the handout build, without reference defaults).
-        ///
-        /// Conventions are those of [`crate::worksheet`]: directions point away from the
-        /// surface; in the local frame the normal is +z.
-        #[cfg(not(feature = "solutions"))]
+        /// surface; in the local frame the normal is +z. The framework itself is compiled
+        /// for one implementation, [`TaskFns`]; test implementations may implement the
+        /// trait directly.
         pub trait Tasks: Sync + Sized {
             $($(
                 $(#[$doc])*
@@ -481,39 +465,71 @@ macro_rules! tasks {
             )+)+
         }
 
-        impl Tasks for crate::implementation::Student {
+        /// An implementation of the worksheet as a table of function pointers, one per task
+        /// function: the boundary between the framework and the crates that implement the
+        /// tasks (`exercises/`, `solutions/`). The framework is compiled once against this
+        /// type, so changing an exercise recompiles only the exercise crate and a link.
+        ///
+        /// Functions that call other tasks receive the table itself as `t`, so a table mixed
+        /// from two implementations ([`TaskFns::mixed`]) routes every call by task.
+        // The field types are the task signatures, spelled out once each.
+        #[allow(clippy::type_complexity)]
+        #[derive(Clone, Copy)]
+        pub struct TaskFns {
             $($(
+                $(#[$doc])*
+                pub $name: fn($(tasks!(@table $ctx),)? $($ty),*) -> $ret,
+            )+)+
+        }
+
+        impl Tasks for TaskFns {
+            $($(
+                #[inline]
                 fn $name(&self, $($arg: $ty),*) -> $ret {
-                    crate::exercises::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                    (self.$name)($({ let _ = stringify!($ctx); self },)? $($arg),*)
                 }
             )+)+
         }
 
-        #[cfg(feature = "solutions")]
-        impl Tasks for crate::implementation::Reference {}
-
-        #[cfg(feature = "solutions")]
-        impl Tasks for crate::implementation::Mixed {
-            $($(
-                fn $name(&self, $($arg: $ty),*) -> $ret {
-                    if self.student().contains(TaskId::$variant) {
-                        crate::exercises::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
-                    } else {
-                        crate::solutions::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
-                    }
+        impl TaskFns {
+            /// The table that takes `task`'s functions from `from` and every other one from
+            /// `self`.
+            pub fn with_task(mut self, from: &TaskFns, task: TaskId) -> TaskFns {
+                match task {
+                    $(TaskId::$variant => { $(self.$name = from.$name;)+ })+
                 }
-            )+)+
+                self
+            }
+        }
+
+        impl std::fmt::Debug for TaskFns {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("TaskFns")
+            }
+        }
+
+        /// The [`TaskFns`] of a crate that implements the tasks: `task_table!()` names, for
+        /// every task function, `crate::<module>::<function>` (the layout of `exercises/`
+        /// and `solutions/`: one module per task).
+        // `crate` is meant: the paths are the calling crate's task modules.
+        #[allow(clippy::crate_in_macro_def)]
+        #[macro_export]
+        macro_rules! task_table {
+            () => {
+                $crate::worksheet::TaskFns {
+                    $($($name: crate::$module::$name,)+)+
+                }
+            };
         }
 
         /// The trait functions that belong to each task, for messages and coverage checks.
         pub fn task_functions(task: TaskId) -> &'static [&'static str] {
             match task {
                 $(TaskId::$variant => &[$(stringify!($name)),+],)+
-                #[allow(unreachable_patterns)]
-                _ => &[],
             }
         }
     };
+    (@table $ctx:ident) => { &TaskFns };
 }
 
 tasks! {

@@ -12,8 +12,8 @@ use pbrlab::converge::builtin::{builtin, irradiance};
 use pbrlab::converge::{Strategy, StudyConfig, StudyResult, run_study};
 #[cfg(feature = "solutions")]
 use pbrlab::converge::{Summary, summarise};
-use pbrlab::implementation::Student;
 use pbrlab::sampling::Sampler;
+use pbrlab_exercises::TASKS as Student;
 use std::sync::Arc;
 
 /// Cosine-weighted sampling whose pdf is 5 % too large: every estimate is 5 % low.
@@ -65,7 +65,7 @@ fn summary<'a>(summaries: &'a [Summary], name: &str) -> &'a Summary {
 #[cfg(feature = "solutions")]
 #[test]
 fn unbiased_strategies_fall_like_one_over_spp_and_a_biased_one_flattens() {
-    use pbrlab::implementation::Reference;
+    use pbrlab_solutions::TASKS as Reference;
     let study = builtin("irradiance", Reference).unwrap();
     let biased = BiasedCosine {
         skies: Arc::new(irradiance::skies(irradiance::PIXELS)),
@@ -164,7 +164,7 @@ fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
 #[cfg(feature = "solutions")]
 #[test]
 fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_flattens() {
-    use pbrlab::implementation::Reference;
+    use pbrlab_solutions::TASKS as Reference;
     use stability_support::{Flaw, flawed};
 
     let summaries = run_builtin("microfacet_albedo", Reference, 1024);
@@ -232,8 +232,8 @@ fn scene_variants_follow_what_the_scene_contains() {
 #[test]
 fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
-    use pbrlab::implementation::Reference;
     use pbrlab::scene::LoadOptions;
+    use pbrlab_solutions::TASKS as Reference;
     use stability_support::{Flaw, flawed};
 
     let out = tempfile::tempdir().unwrap();
@@ -303,7 +303,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
 #[test]
 fn each_finished_level_is_handed_over_for_saving() {
     use pbrlab::converge::run_study_reporting;
-    use pbrlab::implementation::Reference;
+    use pbrlab_solutions::TASKS as Reference;
     let study = builtin("irradiance", Reference).unwrap();
     let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
     let config = StudyConfig {

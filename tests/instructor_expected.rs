@@ -41,6 +41,7 @@ impl Comparator for TolerantJson {
 
 #[test]
 fn stored_expected_data_is_the_references() {
+    install();
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("snapshots/expected");
     settings.set_prepend_module_to_snapshot(false);
@@ -56,4 +57,13 @@ fn stored_expected_data_is_the_references() {
         let json = serde_json::to_string_pretty(&data).expect("serialisable");
         settings.bind(|| insta::assert_snapshot!(task.name(), json));
     }
+}
+
+/// Makes the shipped exercises and the reference the framework's implementations in this
+/// test process, as the `pbrlab` binary does at start.
+fn install() {
+    pbrlab::implementation::install(pbrlab::implementation::Implementations {
+        student: pbrlab_exercises::TASKS,
+        reference: Some(pbrlab_solutions::TASKS),
+    });
 }

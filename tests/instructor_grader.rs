@@ -9,8 +9,10 @@ mod instructor_support;
 use instructor_support::{different, grade, graded_tasks, inputs, messages, wrong};
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
-use pbrlab::implementation::{ImplChoice, Reference, Student};
+use pbrlab::implementation::ImplChoice;
 use pbrlab::worksheet::TaskId;
+use pbrlab_exercises::TASKS as Student;
+use pbrlab_solutions::TASKS as Reference;
 
 #[test]
 fn every_task_in_the_trait_has_checks() {

@@ -94,8 +94,10 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
             assert!(names.contains(&exr), "{exr}");
         }
     }
-    assert!(manifest.cargo_toml.contains("default = []"));
-    assert!(!manifest.cargo_toml.contains("default = [\"solutions\"]"));
+    // The manifest names no reference crate: no member, dependency or default feature.
+    assert!(!manifest.cargo_toml.contains("pbrlab-solutions"));
+    assert!(!manifest.cargo_toml.contains("\"solutions\""));
+    assert!(manifest.cargo_toml.contains("solutions = []\n"));
     // No handout file carries the reference's code.
     let windows = solution_windows();
     assert!(

@@ -14,7 +14,7 @@ use pbrlab::grade::renders::{
     REFERENCE_SEED, REFERENCE_SPP, RENDER_CHECKS, STUDENT_SPP, from_exr, load, render_stats,
     write_reference,
 };
-use pbrlab::implementation::Reference;
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 #[test]

@@ -11,14 +11,13 @@
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::{KajiyaKayParams, PhongParams};
 use pbrlab::grade::probe::probe_task;
-use pbrlab::implementation::Reference;
 use pbrlab::optics::{LayerStack, Slab, StackReport, fresnel_dielectric_f64};
 use pbrlab::sampling::{Sampler, uniform_hemisphere};
 use pbrlab::worksheet::{TaskId, Tasks};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 use std::f64::consts::{FRAC_1_PI, PI};
 
-const R: Reference = Reference;
+use pbrlab_solutions::TASKS as R;
 
 /// Relative tolerance for quantities the reference computes in f64.
 const F64_REL: f64 = 1e-6;

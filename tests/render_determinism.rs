@@ -3,9 +3,9 @@
 
 #![cfg(feature = "solutions")]
 
-use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, render};
 use pbrlab::scene::{LoadOptions, Scene};
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 fn render_with_threads(threads: usize, seed: u64) -> Vec<glam::Vec3> {

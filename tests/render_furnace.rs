@@ -6,10 +6,10 @@
 #![cfg(feature = "solutions")]
 
 use pbrlab::bsdf::HemisphereSampling;
-use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, RenderOutput, render};
 use pbrlab::scene::schema::{MisHeuristic, Strategy};
 use pbrlab::scene::{LoadOptions, Scene};
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/furnace.yaml");

@@ -4,10 +4,10 @@
 
 #![cfg(feature = "solutions")]
 
-use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, RenderOutput, render};
 use pbrlab::scene::schema::Strategy;
 use pbrlab::scene::{LoadOptions, Scene};
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 fn scene(text: &str, options: &LoadOptions) -> Scene {

@@ -7,7 +7,6 @@
 
 use glam::Vec3;
 use pbrlab::geometry::Ray;
-use pbrlab::implementation::Reference;
 use pbrlab::medium::{
     Coefficients, FreeFlight, Homogeneous, Medium, homogeneous_transmittance, ratio_tracking,
 };
@@ -16,6 +15,7 @@ use pbrlab::sampling::Sampler;
 use pbrlab::scene::schema::TransmittanceEstimator;
 use pbrlab::scene::{LoadOptions, Scene};
 use pbrlab::worksheet::Tasks;
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 /// A medium whose coefficients change halfway along z (the errata's slab medium M3), with

@@ -7,11 +7,11 @@
 
 use glam::Vec3;
 use pbrlab::geometry::Ray;
-use pbrlab::implementation::Reference;
 use pbrlab::integrator::Heuristic;
 use pbrlab::sampling::Sampler;
 use pbrlab::scene::{LoadOptions, Scene};
 use pbrlab::worksheet::Tasks;
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 const BASE: &str = "\

@@ -144,6 +144,7 @@ fn the_needs_command_prints_tasks_and_subsystems() {
 
 #[test]
 fn student_renders_stop_on_unwritten_tasks() {
+    install();
     let dir = tempfile::tempdir().unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
         .args([
@@ -176,4 +177,13 @@ fn student_renders_stop_on_unwritten_tasks() {
             "nothing may be rendered"
         );
     }
+}
+
+/// Makes the shipped exercises and the reference the framework's implementations in this
+/// test process, as the `pbrlab` binary does at start.
+fn install() {
+    pbrlab::implementation::install(pbrlab::implementation::Implementations {
+        student: pbrlab_exercises::TASKS,
+        reference: Some(pbrlab_solutions::TASKS),
+    });
 }

@@ -4,9 +4,9 @@
 #![cfg(feature = "solutions")]
 
 use pbrlab::grade::probe::probe_scene;
-use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, output, render};
 use pbrlab::scene::{LoadOptions, Scene};
+use pbrlab_solutions::TASKS as Reference;
 use std::path::{Path, PathBuf};
 
 fn scene_files() -> Vec<PathBuf> {

@@ -4,9 +4,9 @@
 
 #![cfg(feature = "solutions")]
 
-use pbrlab::implementation::Reference;
 use pbrlab::render::{RenderOptions, RenderOutput, render};
 use pbrlab::scene::{LoadOptions, Scene};
+use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
 
 fn cornell(seed: u64) -> RenderOutput {

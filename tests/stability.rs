@@ -5,9 +5,9 @@
 #[cfg(feature = "solutions")]
 mod stability_support;
 
-use pbrlab::implementation::Student;
 use pbrlab::stability::{Case, Outcome, Verdict, cases, run_cases};
 use pbrlab::worksheet::Tasks;
+use pbrlab_exercises::TASKS as Student;
 use std::time::Duration;
 #[cfg(feature = "solutions")]
 use {
@@ -71,7 +71,7 @@ fn stubs_are_not_attempted_everywhere() {
 #[cfg(feature = "solutions")]
 #[test]
 fn the_reference_passes_every_case() {
-    use pbrlab::implementation::Reference;
+    use pbrlab_solutions::TASKS as Reference;
     let outcomes = run_all(Reference, &cases(), TIMEOUT);
     assert!(outcomes.len() >= 70, "only {} cases", outcomes.len());
     let failed: Vec<Outcome> = outcomes

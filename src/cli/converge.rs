@@ -6,7 +6,7 @@ use crate::converge::plot::plot_error_vs_time;
 use crate::converge::scene_study::{ReferenceSource, scene_study};
 use crate::converge::study::FLOOR_MARGIN;
 use crate::converge::{Strategy, Study, StudyConfig, Summary, run_study_reporting, summarise};
-use crate::implementation::{ImplChoice, Student};
+use crate::implementation::ImplChoice;
 use crate::scene::{LoadOptions, Scene};
 use crate::stability::value::format_number;
 use crate::worksheet::Tasks;
@@ -89,7 +89,7 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
     }
     #[cfg(feature = "solutions")]
     let source = ReferenceSource::Render {
-        tasks: crate::implementation::Reference,
+        tasks: *crate::implementation::reference(),
         label: "reference",
         spp,
     };
@@ -111,12 +111,12 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
 /// Runs the study, writes the CSV and the plot, and prints the slope table.
 pub fn run(args: Args) -> anyhow::Result<()> {
     match args.implementation {
-        ImplChoice::Student => run_with(Student, &args),
+        ImplChoice::Student => run_with(*crate::implementation::student(), &args),
         #[cfg(feature = "solutions")]
-        ImplChoice::Reference => run_with(crate::implementation::Reference, &args),
+        ImplChoice::Reference => run_with(*crate::implementation::reference(), &args),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let imp = crate::implementation::Mixed::new(crate::implementation::student_written());
+            let imp = crate::implementation::mixed(crate::implementation::student_written());
             run_with(imp, &args)
         }
         #[cfg(not(feature = "solutions"))]

@@ -2,7 +2,7 @@ use crate::handout;
 use crate::implementation::student_attempted;
 use crate::worksheet::task_functions;
 use anyhow::bail;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Arguments of `pbrlab handout`.
 #[derive(clap::Args, Debug)]
@@ -28,7 +28,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             written.join(", ")
         );
     }
-    let files = handout::write(Path::new(env!("CARGO_MANIFEST_DIR")), &args.dir)?;
+    let files = handout::write(crate::repository_root(), &args.dir)?;
     println!(
         "Wrote {} files to {}. Check it builds: cd {} && cargo test --release",
         files.len(),

@@ -1,9 +1,9 @@
-use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, Student, probe_student};
+use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, probe_student, student};
 use crate::panics::QuietPanics;
 use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
-use crate::worksheet::{TaskId, Tasks};
+use crate::worksheet::Tasks;
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
 
@@ -52,7 +52,7 @@ fn scene_path(given: Option<&Path>) -> PathBuf {
             if local.is_file() {
                 local
             } else {
-                Path::new(env!("CARGO_MANIFEST_DIR")).join(DEFAULT_SCENE)
+                crate::repository_root().join(DEFAULT_SCENE)
             }
         }
     }
@@ -126,10 +126,10 @@ pub fn run(args: Args) -> Result<()> {
     let out = match choice {
         ImplChoice::Student => {
             require_student_tasks(&scene, &path)?;
-            pool.install(|| job.run(&Student))?
+            pool.install(|| job.run(student()))?
         }
         #[cfg(feature = "solutions")]
-        ImplChoice::Reference => pool.install(|| job.run(&crate::implementation::Reference))?,
+        ImplChoice::Reference => pool.install(|| job.run(crate::implementation::reference()))?,
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
             let mine = crate::implementation::student_written();
@@ -138,7 +138,7 @@ pub fn run(args: Args) -> Result<()> {
                 .all_tasks()
                 .iter()
                 .filter(|t| mine.contains(*t))
-                .map(TaskId::name)
+                .map(crate::worksheet::TaskId::name)
                 .collect();
             eprintln!(
                 "your code renders: {}",
@@ -148,7 +148,7 @@ pub fn run(args: Args) -> Result<()> {
                     used.join(", ")
                 }
             );
-            pool.install(|| job.run(&crate::implementation::Mixed::new(mine)))?
+            pool.install(|| job.run(&crate::implementation::mixed(mine)))?
         }
         #[cfg(not(feature = "solutions"))]
         ImplChoice::Reference | ImplChoice::Mixed => {

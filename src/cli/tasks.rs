@@ -34,7 +34,7 @@ fn status(task: TaskId, last: Option<&GradeReport>) -> String {
 /// True when `exercises/<task>.rs` is newer than the last grade.
 fn changed_since_grade(task: TaskId) -> bool {
     let modified = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
-    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+    let file = crate::repository_root()
         .join("exercises")
         .join(format!("{}.rs", task.name()));
     matches!((modified(&file), modified(&history::last_grade_path())), (Some(f), Some(g)) if f > g)

@@ -53,7 +53,7 @@ fn regrade(root: &Path, tasks: &[String]) -> anyhow::Result<()> {
 
 /// Regrades every time a file in `exercises/` is saved.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::repository_root();
     let exercises = root.join("exercises");
     if !exercises.is_dir() {
         bail!("no exercises/ directory in {}", root.display());

@@ -430,7 +430,7 @@ impl SampleCall {
     /// pdf (16 × 16 midpoints per cell).
     #[cfg(feature = "solutions")]
     pub fn reference_target(&self) -> super::sampling::SamplingTarget {
-        let reference = crate::implementation::Reference;
+        let reference = *crate::implementation::reference();
         let bins = self.bins();
         let cells = bins.integrate(|w| self.pdf(&reference, w) as f64, 16);
         super::sampling::SamplingTarget::from_cells(self.to_string(), bins, cells, self.rejects())

@@ -107,7 +107,7 @@ pub fn grade_task_reporting<T: Tasks>(
     }
     #[cfg(feature = "solutions")]
     let mut reference: Vec<Option<EstimatorSpec<'_>>> =
-        catalogue::estimators(task, &crate::implementation::Reference)
+        catalogue::estimators(task, crate::implementation::reference())
             .into_iter()
             .map(Some)
             .collect();

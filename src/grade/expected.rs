@@ -103,7 +103,7 @@ pub fn load_all() -> anyhow::Result<BTreeMap<TaskId, TaskData>> {
 pub fn generate(task: TaskId) -> anyhow::Result<TaskData> {
     let values = super::catalogue::evaluate(
         &super::catalogue::public_inputs(task),
-        &crate::implementation::Reference,
+        crate::implementation::reference(),
     )
     .with_context(|| format!("reference outputs of {task}"))?;
     let sampling = super::catalogue::sampling_setups(task)

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 pub fn state_dir() -> PathBuf {
     std::env::var_os("PBRLAB_STATE_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join(".pbrlab"))
+        .unwrap_or_else(|| crate::repository_root().join(".pbrlab"))
 }
 
 /// The file of the last grade.

@@ -66,7 +66,7 @@ pub const REFERENCE_SEED: u64 = 0x7265_6e64;
 
 /// Where the scene files are.
 pub fn scene_path(scene: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    crate::repository_root()
         .join("scenes")
         .join(format!("{scene}.yaml"))
 }

@@ -86,7 +86,7 @@ fn hidden_cases(task: TaskId, seed: u64) -> anyhow::Result<Vec<super::case::Valu
     use super::catalogue::{evaluate, hidden_inputs};
     evaluate(
         &hidden_inputs(task, seed),
-        &crate::implementation::Reference,
+        crate::implementation::reference(),
     )
 }
 
@@ -385,9 +385,9 @@ pub fn task_has_checks(task: TaskId, input: &TaskInput) -> bool {
 
 /// Tasks whose estimator or stability checks need no stored data.
 fn has_code_checks(task: TaskId) -> bool {
-    let t = &crate::implementation::Student;
+    let t = crate::implementation::student();
     !super::catalogue::estimators(task, t).is_empty()
-        || !crate::stability::cases_for::<crate::implementation::Student>(task).is_empty()
+        || !crate::stability::cases_for::<crate::worksheet::TaskFns>(task).is_empty()
 }
 
 /// A task's outcome from its worker run.

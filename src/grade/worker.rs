@@ -245,17 +245,13 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
     std::process::exit(0);
 }
 
-/// The implementation a production worker grades: `Mixed` over the reference when the
-/// solutions are compiled in, otherwise the student's code alone.
-pub fn production_impl(spec: &ImplSpec) -> anyhow::Result<impl Tasks + use<>> {
-    #[cfg(feature = "solutions")]
-    {
-        Ok(crate::implementation::Mixed::new(spec.student_tasks()))
-    }
-    #[cfg(not(feature = "solutions"))]
-    match spec {
-        ImplSpec::Student => Ok(crate::implementation::Student),
-        other => Err(anyhow!(
+/// The implementation a production worker grades: the student's code for the tasks `spec`
+/// names over the reference, or the student's code alone in a build without the reference.
+pub fn production_impl(spec: &ImplSpec) -> anyhow::Result<crate::worksheet::TaskFns> {
+    match (crate::implementation::try_reference(), spec) {
+        (Some(_), spec) => Ok(crate::implementation::mixed(spec.student_tasks())),
+        (None, ImplSpec::Student) => Ok(*crate::implementation::student()),
+        (None, other) => Err(anyhow!(
             "{other:?} needs the reference, which this build does not have (feature `solutions`)"
         )),
     }

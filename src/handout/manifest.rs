@@ -19,7 +19,6 @@ const GRADER_DATA: &[&str] = &["expected", "renders"];
 const TOP_LEVEL: &[&str] = &[
     "Cargo.toml",
     "Cargo.lock",
-    "build.rs",
     "src",
     "exercises",
     "tests",
@@ -50,7 +49,7 @@ pub fn needs_solutions(source: &str) -> bool {
         .filter(|l| !l.starts_with("//"))
         .any(|l| {
             l.contains("feature = \"solutions\"")
-                || l.contains("pbrlab::solutions")
+                || l.contains("pbrlab_solutions")
                 || l.contains("Reference")
                 || l.contains("Mixed")
         })
@@ -125,13 +124,14 @@ fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<Pat
         .collect())
 }
 
-/// The handout's Cargo.toml: no default features (so no solutions), and no bench or test
-/// target whose file is left out.
+/// The handout's Cargo.toml: without the reference's crate (every line that names
+/// `solutions`: the workspace member, the dependency and the default feature; the feature
+/// itself stays, empty, so `cfg(feature = "solutions")` is still a known condition), and
+/// without any bench or test target whose file is left out.
 fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
     let mut out = String::new();
     let mut section_header = String::new();
     let mut section = String::new();
-    let mut default_rewritten = false;
     let flush = |header: &str, body: &str, out: &mut String| {
         let is_target = header.starts_with("[[bench]]") || header.starts_with("[[test]]");
         if is_target {
@@ -161,20 +161,24 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
             flush(&section_header, &section, &mut out);
             section_header = line.to_string();
             section.clear();
-        } else if section_header.trim() == "[features]" && line.trim_start().starts_with("default")
-        {
-            section.push_str("default = []\n");
-            default_rewritten = true;
-        } else {
+        } else if section_header.trim() == "[features]" && line.starts_with("solutions") {
+            section.push_str(EMPTY_SOLUTIONS_FEATURE);
+        } else if !line.contains("solutions") {
             section.push_str(line);
         }
     }
     flush(&section_header, &section, &mut out);
-    if !default_rewritten {
-        bail!("Cargo.toml has no `default` feature list to rewrite");
+    if let Some(line) = out
+        .split_inclusive('\n')
+        .find(|l| l.contains("solutions") && *l != EMPTY_SOLUTIONS_FEATURE)
+    {
+        bail!("cannot leave the solutions out of Cargo.toml: `{line}` names them");
     }
     Ok(out)
 }
+
+/// The handout's `solutions` feature: declared, and empty.
+const EMPTY_SOLUTIONS_FEATURE: &str = "solutions = []\n";
 
 /// Selects the handout's files from the repository at `root`.
 pub fn select(root: &Path) -> anyhow::Result<Manifest> {
@@ -219,9 +223,14 @@ mod tests {
 
     #[test]
     fn cargo_toml_loses_default_features_and_dropped_targets() {
-        let text = "[package]\nname = \"x\"\n\n[features]\ndefault = [\"solutions\"]\nsolutions = []\n\n[[bench]]\nname = \"tasks\"\nharness = false\n\n[[bench]]\nname = \"render\"\nharness = false\n";
+        let text = "[workspace]\nmembers = [\n    \"src\",\n    \"solutions\",\n]\n\n[package]\nname = \"x\"\n\n[features]\ndefault = [\"solutions\"]\nsolutions = [\"dep:pbrlab-solutions\"]\n\n[dependencies]\npbrlab-solutions = { path = \"solutions\", optional = true }\n\n[[bench]]\nname = \"tasks\"\nharness = false\n\n[[bench]]\nname = \"render\"\nharness = false\n";
         let out = rewrite_cargo_toml(text, &[PathBuf::from("benches/render.rs")]).unwrap();
-        assert!(out.contains("default = []\nsolutions = []"), "{out}");
+        assert!(
+            !out.replace("solutions = []\n", "").contains("solutions"),
+            "{out}"
+        );
+        assert!(out.contains("[features]\nsolutions = []\n"), "{out}");
+        assert!(out.contains("members = [\n    \"src\",\n]"), "{out}");
         assert!(!out.contains("\"tasks\""), "{out}");
         assert!(out.contains("name = \"render\""), "{out}");
     }

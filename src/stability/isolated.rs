@@ -8,7 +8,7 @@ use super::{Case, Outcome, cases_for};
 use crate::grade::isolation::{self, Launcher, WorkerFailure};
 use crate::grade::runner::{DEFAULT_MEMORY_LIMIT, run_jobs};
 use crate::grade::worker::{ImplSpec, Job, JobKind, Record};
-use crate::implementation::Student;
+use crate::worksheet::TaskFns;
 use crate::worksheet::TaskId;
 use anyhow::bail;
 use std::time::Duration;
@@ -22,7 +22,7 @@ pub fn run_isolated(
     timeout: Duration,
 ) -> anyhow::Result<Vec<Outcome>> {
     // Only the cases' descriptions are used here; the workers run them.
-    let cases: Vec<Case<Student>> = cases_for::<Student>(task);
+    let cases: Vec<Case<TaskFns>> = cases_for::<TaskFns>(task);
     let jobs: Vec<Job> = cases
         .iter()
         .map(|case| Job {

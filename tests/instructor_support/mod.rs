@@ -12,8 +12,19 @@ use pbrlab::grade::verdict::{CheckResult, TaskStatus};
 use pbrlab::worksheet::{TaskId, Tasks};
 use std::collections::BTreeMap;
 
-/// The inputs of every task (stored data, no hidden cases) for statistical seed `seed`.
+/// Makes the shipped exercises and the reference the framework's student and reference
+/// implementations in this test process, as the `pbrlab` binary does at start.
+pub fn install() {
+    pbrlab::implementation::install(pbrlab::implementation::Implementations {
+        student: pbrlab_exercises::TASKS,
+        reference: Some(pbrlab_solutions::TASKS),
+    });
+}
+
+/// The inputs of every task (stored data, no hidden cases) for statistical seed `seed`
+/// (installs the implementations first: hidden cases and estimators use the reference).
 pub fn inputs(seed: u64) -> BTreeMap<TaskId, TaskInput> {
+    install();
     prepare(&GradeOptions {
         seed,
         ..GradeOptions::default()

@@ -13,9 +13,9 @@ use pbrlab::medium::{FreeFlight, Medium};
 use pbrlab::optics::{LayerStack, StackReport};
 use pbrlab::sampling::Sampler;
 use pbrlab::scene::Scene;
-use pbrlab::solutions as sol;
 use pbrlab::task_set::TaskSet;
 use pbrlab::worksheet::{TaskId, Tasks};
+use pbrlab_solutions as sol;
 
 /// A BRDF callback as the tasks take it.
 pub type Brdf<'a> = &'a dyn Fn(Vec3, Vec3) -> f32;

@@ -6,8 +6,8 @@ use glam::{Vec2, Vec3};
 use pbrlab::bsdf::PlausibilityReport;
 use pbrlab::optics::schlick_weight;
 use pbrlab::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
-use pbrlab::solutions as sol;
 use pbrlab::worksheet::{TaskId, Tasks};
+use pbrlab_solutions as sol;
 use std::f32::consts::{FRAC_1_PI, PI};
 
 /// GGX D in Cartesian form with free roughnesses (for slips in other tasks).

@@ -54,12 +54,12 @@ pub fn cases_for<T: Tasks>(task: TaskId) -> Vec<Case<T>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::implementation::Student;
+    use crate::worksheet::TaskFns;
     use std::collections::HashSet;
 
     #[test]
     fn names_are_unique_and_start_with_a_function_of_their_task() {
-        let all = cases::<Student>();
+        let all = cases::<TaskFns>();
         let names: HashSet<&str> = all.iter().map(|c| c.name).collect();
         assert_eq!(names.len(), all.len(), "duplicate case names");
         for c in &all {
@@ -77,7 +77,7 @@ mod tests {
     fn every_task_in_the_trait_has_cases() {
         for task in TaskId::ALL {
             let in_trait = !crate::worksheet::task_functions(task).is_empty();
-            let n = cases_for::<Student>(task).len();
+            let n = cases_for::<TaskFns>(task).len();
             assert!(
                 !in_trait || n > 0,
                 "task {task} is in the Tasks trait but has no stability cases"

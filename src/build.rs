@@ -9,14 +9,14 @@ use std::path::Path;
 
 fn main() {
     embed(
-        "tests/snapshots/expected",
+        "../tests/snapshots/expected",
         "snap",
         "expected_files.rs",
         "FILES",
         false,
     );
     embed(
-        "tests/snapshots/renders",
+        "../tests/snapshots/renders",
         "exr",
         "render_files.rs",
         "RENDER_FILES",

@@ -1,0 +1,42 @@
+//! The student's exercises: one file per task, each a stub to fill in.
+//!
+//! This crate is yours to edit file by file (`exercises/<task>.rs`); this file, the
+//! manifest and the build script belong to the framework, and the grader uses its own copy
+//! of them. The crate depends on the framework's task API only: it cannot name the
+//! reference solutions or the grader's expected data, and it may not use `unsafe`.
+#![forbid(unsafe_code)]
+#![allow(unused_variables)]
+
+/// What a task file needs in scope: vectors, the task trait, the parameter types.
+pub mod prelude {
+    pub use pbrlab::prelude::*;
+}
+
+/// The framework helpers a task may use, under the paths the exercise texts give
+/// (`crate::bsdf::projected_alpha`, `crate::optics::schlick_weight`, …).
+pub use pbrlab::{
+    bsdf, geometry, integrator, light, math, medium, optics, sampling, scene, worksheet,
+};
+
+/// The crate's task modules under the name they had when `exercises/` was a module of the
+/// framework (`crate::exercises::reflect::reflect`).
+pub use crate as exercises;
+
+pub mod aniso_ndf;
+pub mod beckmann_ndf;
+pub mod brdf_check;
+pub mod cook_torrance;
+pub mod cosine_sample;
+pub mod delta_tracking;
+pub mod fresnel_schlick;
+pub mod kajiya_kay;
+pub mod mis;
+pub mod ndf_sample;
+pub mod path_trace;
+pub mod phong;
+pub mod reflect;
+pub mod refract_stack;
+pub mod smith_g1;
+
+/// The student's code as the framework calls it.
+pub static TASKS: pbrlab::worksheet::TaskFns = pbrlab::task_table!();
