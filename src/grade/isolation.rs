@@ -1,11 +1,19 @@
-//! The parent side of isolation: starts a worker process for one job, feeds it the job,
-//! enforces the time limit, and turns whatever happened into a result or a crash report.
+//! The parent side of isolation: starts a worker process for one job in a private
+//! temporary directory, feeds it the job and its sandbox policy, enforces the time limit on
+//! the process and on its pipes, and turns whatever happened into a result or a crash
+//! report. Everything a worker prints is data: lines are read as bytes (invalid UTF-8 is
+//! replaced, not fatal), each cut at [`LINE_LIMIT`], and only lines with the job's nonce
+//! are read as records.
 
+use super::sandbox::{Policy, Protections};
 use super::verdict::CheckResult;
-use super::worker::{CHECK_MARKER, Job, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER};
+use super::worker::{
+    CHECK_MARKER, Delivery, Job, JobKind, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
+};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 /// Threads a worker's renders may use.
@@ -85,6 +93,8 @@ pub struct WorkerRun {
     pub step: Option<String>,
     /// The checks that finished, kept for a worker that dies later.
     pub finished: Vec<CheckResult>,
+    /// The protections the worker reported in force before any student code ran.
+    pub protections: Option<Protections>,
 }
 
 impl WorkerRun {
@@ -96,6 +106,7 @@ impl WorkerRun {
             seconds: 0.0,
             step: None,
             finished: Vec::new(),
+            protections: None,
         }
     }
 }
@@ -110,11 +121,120 @@ fn marked<'l>(line: &'l str, marker: &str, nonce: &str) -> Option<&'l str> {
 /// Keep at most this much of the student's output.
 const OUTPUT_LIMIT: usize = 8 * 1024;
 
+/// The longest line read from a worker, in bytes; the rest of a longer line is dropped.
+pub const LINE_LIMIT: usize = 4 << 20;
+
+/// How long the pipes may stay open after the worker has ended (a process that inherited
+/// them cannot hold the grader longer than this).
+const PIPE_GRACE: Duration = Duration::from_millis(500);
+
+/// The CPU seconds a worker may use for a job with wall-clock limit `timeout`, summed over
+/// its threads.
+fn cpu_seconds(timeout: Duration) -> u64 {
+    (timeout.as_secs_f64() * WORKER_THREADS as f64).ceil() as u64 + 5
+}
+
 /// Runs `job` in a new worker, killing it after `timeout`.
 pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     let start = Instant::now();
+    let scratch = match tempfile::Builder::new().prefix("pbrlab-worker-").tempdir() {
+        Ok(dir) => dir,
+        Err(e) => {
+            return WorkerRun::failed(WorkerFailure::Grader(format!(
+                "could not make the worker's temporary directory: {e}"
+            )));
+        }
+    };
+    // A render writes its pictures into the scratch directory; they are copied out once
+    // the worker is gone.
+    let mut job = job.clone();
+    let pictures = match &mut job.kind {
+        JobKind::Render { report_dir, .. } => report_dir.take().map(|dest| {
+            let inside = scratch.path().join("pictures");
+            *report_dir = Some(inside.clone());
+            (inside, dest)
+        }),
+        _ => None,
+    };
+    let delivery = Delivery {
+        sandbox: Policy {
+            memory_limit: job.memory_limit,
+            cpu_seconds: cpu_seconds(timeout),
+            readable: vec![crate::repository_root().join("scenes")],
+            scratch: Some(scratch.path().to_path_buf()),
+        },
+        job,
+    };
+    let mut run = run_in(launcher, &delivery, scratch.path(), timeout, start);
+    if let Some((inside, dest)) = pictures
+        && let Err(e) = copy_pictures(&inside, &dest)
+    {
+        run.output
+            .push_str(&format!("(pictures not copied to the report: {e:#})\n"));
+    }
+    run
+}
+
+/// Copies the PNG pictures a render worker left in `from` to `to`.
+fn copy_pictures(from: &Path, to: &Path) -> anyhow::Result<()> {
+    use anyhow::Context;
+    let Ok(entries) = std::fs::read_dir(from) else {
+        return Ok(());
+    };
+    std::fs::create_dir_all(to).with_context(|| format!("creating {}", to.display()))?;
+    for entry in entries.flatten() {
+        let path = entry.path();
+        let is_png = path.extension().is_some_and(|e| e == "png");
+        if is_png && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let dest = to.join(entry.file_name());
+            std::fs::copy(&path, &dest).with_context(|| format!("copying {}", dest.display()))?;
+        }
+    }
+    Ok(())
+}
+
+/// One line of a worker's stdout, as text (invalid UTF-8 replaced), at most
+/// [`LINE_LIMIT`] bytes of it; `None` at the end of the stream.
+fn read_line(reader: &mut impl BufRead) -> Option<String> {
+    let mut line = Vec::new();
+    let mut any = false;
+    loop {
+        let buffer = match reader.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(_) => break,
+        };
+        if buffer.is_empty() {
+            break;
+        }
+        any = true;
+        let (chunk, done) = match buffer.iter().position(|&b| b == b'\n') {
+            Some(i) => (&buffer[..i], Some(i + 1)),
+            None => (buffer, None),
+        };
+        let room = LINE_LIMIT.saturating_sub(line.len());
+        line.extend_from_slice(&chunk[..chunk.len().min(room)]);
+        let used = done.unwrap_or(buffer.len());
+        reader.consume(used);
+        if done.is_some() {
+            break;
+        }
+    }
+    any.then(|| String::from_utf8_lossy(&line).into_owned())
+}
+
+fn run_in(
+    launcher: &Launcher,
+    delivery: &Delivery,
+    scratch: &Path,
+    timeout: Duration,
+    start: Instant,
+) -> WorkerRun {
+    let job = &delivery.job;
     let spawned = launcher
         .command()
+        .current_dir(scratch)
+        .env("TMPDIR", scratch)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -128,19 +248,23 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             )));
         }
     };
-    let payload = serde_json::to_vec(job).unwrap_or_default();
+    let payload = serde_json::to_vec(delivery).unwrap_or_default();
     if let Some(mut stdin) = child.stdin.take() {
         // A worker that dies early closes the pipe; its exit status tells why.
         let _ = stdin.write_all(&payload);
     }
     let nonce = job.nonce.clone();
     let stdout = child.stdout.take().map(|out| {
+        let (tx, rx) = mpsc::channel();
         std::thread::spawn(move || {
             let mut seen = Seen::default();
-            for line in BufReader::new(out).lines() {
-                let Ok(line) = line else { break };
-                if marked(&line, STARTED_MARKER, &nonce).is_some() {
-                    seen.started = true;
+            let mut reader = BufReader::new(out);
+            while let Some(line) = read_line(&mut reader) {
+                if let Some(json) = marked(&line, STARTED_MARKER, &nonce) {
+                    if !seen.started {
+                        seen.started = true;
+                        seen.protections = serde_json::from_str(json.trim()).ok();
+                    }
                 } else if let Some(json) = marked(&line, RESULT_MARKER, &nonce) {
                     seen.record = Some(serde_json::from_str::<Record>(json.trim()));
                 } else if let Some(step) = marked(&line, STEP_MARKER, &nonce) {
@@ -153,27 +277,40 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
                     seen.printed.push('\n');
                 }
             }
-            seen
-        })
+            let _ = tx.send(seen);
+        });
+        rx
     });
     let stderr = child.stderr.take().map(|err| {
+        let (tx, rx) = mpsc::channel();
         std::thread::spawn(move || {
-            let mut text = String::new();
-            let _ = BufReader::new(err)
-                .take(OUTPUT_LIMIT as u64 * 4)
-                .read_to_string(&mut text);
-            text
-        })
+            let mut bytes = Vec::new();
+            let mut reader = BufReader::new(err).take(OUTPUT_LIMIT as u64 * 4);
+            let _ = reader.read_to_end(&mut bytes);
+            // Drain the rest, so a chatty worker is not blocked on a full pipe.
+            let _ = std::io::copy(&mut reader.into_inner(), &mut std::io::sink());
+            let _ = tx.send(String::from_utf8_lossy(&bytes).into_owned());
+        });
+        rx
     });
     let status = wait(&mut child, timeout);
+    // The deadline holds for the pipes too: whatever still holds them open (a process
+    // that inherited them) is not waited for.
+    let pipe_deadline = Instant::now() + PIPE_GRACE;
+    let left = || pipe_deadline.saturating_duration_since(Instant::now());
     let Seen {
         record,
         started,
         printed,
         step,
         finished,
-    } = stdout.and_then(|h| h.join().ok()).unwrap_or_default();
-    let errors = stderr.and_then(|h| h.join().ok()).unwrap_or_default();
+        protections,
+    } = stdout
+        .and_then(|rx| rx.recv_timeout(left()).ok())
+        .unwrap_or_default();
+    let errors = stderr
+        .and_then(|rx| rx.recv_timeout(left()).ok())
+        .unwrap_or_default();
     let seconds = start.elapsed().as_secs_f64();
     let mut output = printed;
     if !errors.trim().is_empty() {
@@ -208,6 +345,7 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
         seconds,
         step,
         finished,
+        protections,
     }
 }
 
@@ -219,6 +357,7 @@ struct Seen {
     printed: String,
     step: Option<String>,
     finished: Vec<CheckResult>,
+    protections: Option<Protections>,
 }
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {

@@ -36,6 +36,7 @@ pub mod renders;
 pub mod report;
 pub mod runner;
 pub mod sampling;
+pub mod sandbox;
 pub mod scene_gate;
 pub mod stability;
 pub mod stats;

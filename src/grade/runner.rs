@@ -240,23 +240,27 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
             memory_limit: options.memory_limit,
         });
     }
+    let mut sandbox = std::collections::BTreeSet::new();
     for (&task, run) in graded.iter().zip(run_all(launcher, jobs, options)) {
+        sandbox.extend(run.protections.as_ref().map(ToString::to_string));
         outcomes.push((task.name().to_string(), outcome(task, run)));
     }
     outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
     let mut tasks: Vec<TaskOutcome> = outcomes.into_iter().map(|(_, o)| o).collect();
     if options.renders && TaskId::ALL.iter().all(|t| options.tasks.contains(t)) {
-        let renders = grade_renders(options, launcher, &tasks, &attempted);
+        let renders = grade_renders(options, launcher, &tasks, &attempted, &mut sandbox);
         tasks.extend(renders);
     }
     let implementation = format!("{:?}", options.implementation).to_lowercase();
-    Ok(GradeReport::new(
+    let mut report = GradeReport::new(
         &implementation,
         options.seed,
         options.hidden_seed.is_some(),
         tasks,
         start.elapsed().as_secs_f64(),
-    ))
+    );
+    report.sandbox = sandbox.into_iter().collect();
+    Ok(report)
 }
 
 fn no_checks(task: TaskId) -> TaskOutcome {
@@ -284,6 +288,7 @@ fn grade_renders(
     launcher: &Launcher,
     graded: &[TaskOutcome],
     attempted: &[TaskId],
+    sandbox: &mut std::collections::BTreeSet<String>,
 ) -> Vec<TaskOutcome> {
     let mut results = Vec::new();
     let mut jobs = Vec::new();
@@ -355,6 +360,7 @@ fn grade_renders(
     );
     for ((i, _), run) in jobs.iter().zip(runs) {
         let check = super::renders::RENDER_CHECKS[*i];
+        sandbox.extend(run.protections.as_ref().map(ToString::to_string));
         let mut outcome = outcome(TaskId::PathTrace, run);
         outcome.task = scene_entry(check.scene);
         outcome.max_points = check.points;

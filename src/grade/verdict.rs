@@ -257,6 +257,10 @@ pub struct GradeReport {
     pub max_score: f64,
     /// Wall time of the run, in seconds.
     pub seconds: f64,
+    /// The protections the workers that ran student code reported in force, each distinct
+    /// set once (see [`crate::grade::sandbox`]); empty when no worker ran.
+    #[serde(default)]
+    pub sandbox: Vec<String>,
 }
 
 impl GradeReport {
@@ -278,6 +282,7 @@ impl GradeReport {
             score,
             max_score,
             seconds,
+            sandbox: Vec::new(),
         }
     }
 

@@ -9,11 +9,12 @@
 //! having crashed.
 
 use super::checks::{Progress, ProgressSink, TaskInput, grade_task_reporting};
+use super::sandbox::{self, Policy};
 use super::verdict::CheckResult;
 use crate::panics;
 use crate::stability::runner::CaseResult;
 use crate::worksheet::{TaskId, Tasks};
-use anyhow::{Context, anyhow};
+use anyhow::anyhow;
 use serde::{Deserialize, Serialize};
 use std::io::{Read, Write};
 
@@ -29,8 +30,10 @@ pub const STEP_MARKER: &str = "PBRLAB-STEP";
 /// the check as JSON: when the worker dies later, the checks that finished are kept.
 pub const CHECK_MARKER: &str = "PBRLAB-CHECK";
 
-/// The marker of the line a worker prints once it has its job, before any student code
-/// runs: a worker that ends without it failed to start (the grader's fault, not the code's).
+/// The marker of the line a worker prints once it has its job and has entered its sandbox,
+/// before any student code runs, followed by the nonce and the [`sandbox::Protections`] in
+/// force as JSON: a worker that ends without it failed to start (the grader's fault, not the
+/// code's).
 pub const STARTED_MARKER: &str = "PBRLAB-STARTED";
 
 /// Which implementation a worker runs for the graded task.
@@ -93,6 +96,15 @@ pub enum JobKind {
         /// Where to write the pictures for the HTML report.
         report_dir: Option<std::path::PathBuf>,
     },
+}
+
+/// What the grader writes to a worker's stdin: the job and the sandbox to run it in.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Delivery {
+    /// The job.
+    pub job: Job,
+    /// What the worker may do while it runs the job.
+    pub sandbox: Policy,
 }
 
 /// A job for a worker process.
@@ -172,44 +184,30 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
     })
 }
 
-/// Limits this process's address space to `bytes`, so a runaway allocation fails instead of
-/// exhausting the machine.
-pub fn limit_memory(bytes: u64) -> anyhow::Result<()> {
-    #[cfg(unix)]
-    if bytes > 0 {
-        let limit = libc::rlimit {
-            rlim_cur: bytes as libc::rlim_t,
-            rlim_max: bytes as libc::rlim_t,
-        };
-        // SAFETY: setrlimit reads a valid, initialised rlimit struct.
-        if unsafe { libc::setrlimit(libc::RLIMIT_AS, &limit) } != 0 {
-            return Err(std::io::Error::last_os_error()).context("setrlimit(RLIMIT_AS)");
-        }
-    }
-    #[cfg(not(unix))]
-    let _ = bytes;
-    Ok(())
-}
-
-/// The worker's main loop: reads the job from stdin, builds the implementation with `make`,
-/// runs the job and prints the result line. Never returns: the process exits right after
-/// the result line, so nothing the student left running can print after it.
+/// The worker's main loop: reads the [`Delivery`] from stdin, enters its sandbox, builds the
+/// implementation with `make`, runs the job and prints the result line. Never returns: the
+/// process exits right after the result line, so nothing the student left running can
+/// print after it.
 pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
     let mut text = String::new();
-    let job: Result<Job, String> = std::io::stdin()
+    let delivery: Result<Delivery, String> = std::io::stdin()
         .read_to_string(&mut text)
         .map_err(|e| e.to_string())
         .and_then(|_| serde_json::from_str(&text).map_err(|e| e.to_string()));
-    let job = match job {
-        Ok(job) => job,
+    let Delivery { job, sandbox } = match delivery {
+        Ok(delivery) => delivery,
         Err(e) => {
             eprintln!("grade-worker: cannot read the job on stdin: {e}");
             std::process::exit(2);
         }
     };
+    drop(text);
+    // Before any other thread exists and before any student code runs.
+    let protections = sandbox::enter(&sandbox);
     {
         let mut out = std::io::stdout().lock();
-        let _ = writeln!(out, "\n{STARTED_MARKER} {}", job.nonce);
+        let json = serde_json::to_string(&protections).unwrap_or_default();
+        let _ = writeln!(out, "\n{STARTED_MARKER} {} {json}", job.nonce);
         let _ = out.flush();
     }
     let nonce = job.nonce.clone();
@@ -227,7 +225,7 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
         let _ = writeln!(out, "\n{line}");
         let _ = out.flush();
     };
-    let record = match limit_memory(job.memory_limit).and_then(|()| make(&job.implementation)) {
+    let record = match make(&job.implementation) {
         Ok(t) => run_job(&t, &job.kind, &mut progress),
         Err(e) => Record::Error {
             message: format!("{e:#}"),

@@ -53,6 +53,9 @@ pub fn text(report: &GradeReport) -> String {
         "",
         report.seconds
     );
+    for protections in &report.sandbox {
+        let _ = writeln!(s, "sandbox of the workers: {protections}");
+    }
     for t in &report.tasks {
         let details = details(t);
         if !details.is_empty() {

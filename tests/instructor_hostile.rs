@@ -1,0 +1,241 @@
+//! Hostile student code at run time: a `smith_g1` that computes the right values but first
+//! tries to cheat or to break out of its worker. Every attempt must fail inside the sandbox
+//! (the attack prints `SANDBOX BREACH` when one succeeds), the task must be graded as the
+//! honest code it otherwise is, and the other tasks must not notice.
+//!
+//! The workers are this test binary (`worker_entry`), started by the real grader, so the
+//! real sandbox (`pbrlab::grade::sandbox`) and the real pipes are exercised. What is refused
+//! at compile time (naming the reference, `#[path]`, `include_str!`, `unsafe`, …) is tested
+//! in `tests/instructor_trust.rs`.
+#![cfg(feature = "solutions")]
+
+mod instructor_support;
+
+use instructor_support::patch::Patch;
+use pbrlab::grade::isolation::Launcher;
+use pbrlab::grade::runner::{GradeOptions, grade};
+use pbrlab::grade::verdict::{GradeReport, TaskStatus};
+use pbrlab::implementation::ImplChoice;
+use pbrlab::worksheet::TaskId;
+use std::io::Write;
+use std::path::PathBuf;
+use std::sync::Once;
+use std::time::Duration;
+
+const ATTACK: &str = "PBRLAB_TEST_ATTACK";
+const CANARY: &str = "PBRLAB_TEST_CANARY";
+const BREACH: &str = "SANDBOX BREACH";
+
+fn breach(what: impl std::fmt::Display) {
+    println!("{BREACH}: {what}");
+}
+
+/// Files a cheater would like to read: the stored expected data, the reference's source, the
+/// grader's binary and this process's own memory (where the job's nonce lives).
+fn read_answers() {
+    let root = pbrlab::repository_root();
+    for file in [
+        root.join("tests/snapshots/expected/smith_g1.snap"),
+        root.join("solutions/smith_g1.rs"),
+        root.join("Cargo.toml"),
+        PathBuf::from("/proc/self/exe"),
+        PathBuf::from("/proc/self/mem"),
+        PathBuf::from("/proc/self/environ"),
+        PathBuf::from("/etc/passwd"),
+    ] {
+        if std::fs::File::open(&file).is_ok() {
+            breach(format!("opened {}", file.display()));
+        }
+    }
+    if std::fs::read_dir(root).is_ok() {
+        breach("listed the repository");
+    }
+}
+
+/// Files a cheater would like to write: the report, the binary, the scenes, the stored
+/// data; a canary file outside the worker's directory stands in for the report.
+fn write_outside() {
+    let root = pbrlab::repository_root();
+    let canary = PathBuf::from(std::env::var(CANARY).unwrap_or_default());
+    if std::fs::write(&canary, "forged report").is_ok() {
+        breach(format!("overwrote {}", canary.display()));
+    }
+    if std::fs::remove_file(&canary).is_ok() {
+        breach(format!("removed {}", canary.display()));
+    }
+    let new_files = [
+        canary.with_extension("new"),
+        root.join("scenes/breach.yaml"),
+        root.join("tests/snapshots/expected/breach.snap"),
+        std::env::current_exe()
+            .unwrap_or_default()
+            .with_file_name("breach"),
+    ];
+    for file in new_files {
+        if std::fs::write(&file, "x").is_ok() {
+            let _ = std::fs::remove_file(&file);
+            breach(format!("created {}", file.display()));
+        }
+    }
+    if std::fs::OpenOptions::new()
+        .append(true)
+        .open(root.join("scenes/cornell.yaml"))
+        .is_ok()
+    {
+        breach("opened scenes/cornell.yaml for writing");
+    }
+    // Its own directory is writable: scratch files are allowed.
+    let own = std::env::temp_dir().join("scratch.txt");
+    if std::fs::write(&own, "allowed").is_err() {
+        println!("could not write {} (it should be writable)", own.display());
+    }
+}
+
+/// A process that outlives the grade, or holds the grader's pipes open.
+fn spawn_daemon() {
+    for program in ["/bin/sleep", "/usr/bin/sleep", "/bin/sh"] {
+        if let Ok(mut child) = std::process::Command::new(program).arg("1000").spawn() {
+            let _ = child.kill();
+            breach(format!("started {program}"));
+        }
+    }
+    let thread = std::thread::spawn(|| 1 + 1).join();
+    if !matches!(thread, Ok(2)) {
+        println!("could not start a thread (threads should work)");
+    }
+}
+
+/// The network, in and out, and local sockets.
+fn open_sockets() {
+    if std::net::TcpListener::bind("127.0.0.1:0").is_ok() {
+        breach("listened on TCP");
+    }
+    if std::net::TcpStream::connect_timeout(
+        &"127.0.0.1:9".parse().expect("an address"),
+        Duration::from_millis(200),
+    )
+    .is_ok()
+    {
+        breach("connected over TCP");
+    }
+    if std::net::UdpSocket::bind("127.0.0.1:0").is_ok() {
+        breach("bound a UDP socket");
+    }
+    if std::os::unix::net::UnixStream::pair().is_ok() {
+        breach("made a UNIX socket pair");
+    }
+}
+
+/// Output that used to break the grader: invalid UTF-8, and one line of 200 MB.
+fn garble_output() {
+    let mut out = std::io::stdout().lock();
+    let _ = out.write_all(b"\xff\xfe not UTF-8 \xc3\x28\n");
+    let chunk = vec![b'x'; 1 << 20];
+    for _ in 0..200 {
+        let _ = out.write_all(&chunk);
+    }
+    let _ = out.write_all(b"\n");
+    let _ = out.flush();
+}
+
+/// The worker: runs only when started by the tests below. Each attack runs once, at the
+/// first call of `smith_g1`; the function itself is the reference's.
+#[test]
+fn worker_entry() {
+    let Ok(name) = std::env::var(ATTACK) else {
+        return;
+    };
+    instructor_support::install();
+    static ONCE: Once = Once::new();
+    let mut patch = Patch::new(TaskId::SmithG1);
+    patch.misbehave = Some(match name.as_str() {
+        "read" => || ONCE.call_once(read_answers),
+        "write" => || ONCE.call_once(write_outside),
+        "spawn" => || ONCE.call_once(spawn_daemon),
+        "sockets" => || ONCE.call_once(open_sockets),
+        "output" => || ONCE.call_once(garble_output),
+        other => panic!("unknown attack {other}"),
+    });
+    pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
+}
+
+/// Grades reflect, smith_g1 and cook_torrance with workers that attack with `attack`.
+fn grade_under(attack: &str, canary: &std::path::Path) -> GradeReport {
+    instructor_support::install();
+    let launcher = Launcher {
+        program: std::env::current_exe().expect("test binary path"),
+        args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
+            .map(String::from)
+            .to_vec(),
+        env: vec![
+            (ATTACK.into(), attack.into()),
+            (CANARY.into(), canary.display().to_string()),
+        ],
+    };
+    let options = GradeOptions {
+        tasks: vec![TaskId::Reflect, TaskId::SmithG1, TaskId::CookTorrance],
+        implementation: ImplChoice::Student,
+        timeout: Duration::from_secs(20),
+        renders: false,
+        ..GradeOptions::default()
+    };
+    grade(&options, &launcher).expect("grading runs")
+}
+
+/// Runs `attack` and checks that it achieved nothing: every task passes as honest code,
+/// no output reports a breach, the canary is intact, and the sandbox was fully in force.
+fn attack_fails(attack: &str) -> GradeReport {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let canary = dir.path().join("results.json");
+    std::fs::write(&canary, "genuine").expect("canary written");
+    let report = grade_under(attack, &canary);
+    for t in &report.tasks {
+        assert_eq!(
+            t.status,
+            TaskStatus::Passed,
+            "{attack}: {} {:?}",
+            t.task,
+            t.status
+        );
+        assert!(!t.output.contains(BREACH), "{attack}: {}", t.output);
+        assert!(!t.output.contains("should"), "{attack}: {}", t.output);
+    }
+    assert_eq!(
+        std::fs::read_to_string(&canary).expect("canary still there"),
+        "genuine"
+    );
+    assert_eq!(
+        report.sandbox,
+        ["landlock in force; seccomp in force; limits in force"],
+        "{attack}"
+    );
+    report
+}
+
+#[test]
+fn expected_data_the_reference_and_memory_cannot_be_read() {
+    attack_fails("read");
+}
+
+#[test]
+fn nothing_outside_the_workers_directory_can_be_written() {
+    attack_fails("write");
+}
+
+#[test]
+fn no_process_can_be_started_to_outlive_the_grade_or_hold_its_pipes() {
+    attack_fails("spawn");
+}
+
+#[test]
+fn no_socket_can_be_opened() {
+    attack_fails("sockets");
+}
+
+#[test]
+fn invalid_utf8_and_a_huge_line_are_only_output() {
+    let report = attack_fails("output");
+    let g1 = report.task("smith_g1").expect("graded");
+    assert!(g1.output.contains("not UTF-8"), "{}", g1.output);
+    assert!(g1.output.len() <= 64 * 1024, "{}", g1.output.len());
+}
