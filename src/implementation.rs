@@ -7,12 +7,11 @@
 //! student's crate cannot reach the reference through the framework, and an exercise edit
 //! recompiles only the exercise crate and the binary's link.
 
-use crate::panics::QuietPanics;
+use crate::grade::isolation::Launcher;
 use crate::task_set::TaskSet;
 use crate::worksheet::{TaskFns, TaskId};
-use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::{OnceLock, mpsc};
-use std::time::{Duration, Instant};
+use std::sync::OnceLock;
+use std::time::Duration;
 
 /// The task tables a binary links.
 #[derive(Clone, Copy, Debug)]
@@ -103,13 +102,15 @@ pub fn catch_quietly<R>(f: impl FnOnce() -> R) -> Result<R, String> {
 pub const PROBE_TIMEOUT: Duration = Duration::from_secs(3);
 
 /// What one harmless call of each of a task's functions found in the student's code.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(tag = "attempt", content = "message", rename_all = "snake_case")]
 pub enum Attempt {
     /// The functions still stop at `todo!()`.
     NotAttempted,
     /// The functions return.
     Written,
-    /// A function panicked (other than `todo!()`), with this message.
+    /// A function panicked (other than `todo!()`) or brought its process down, with this
+    /// message.
     Panics(String),
     /// A function did not return within [`PROBE_TIMEOUT`] (an infinite loop?).
     Hangs,
@@ -123,62 +124,60 @@ impl Attempt {
 }
 
 /// Probes the student's code for each of `tasks` with one harmless call per function
-/// ([`crate::grade::probe::probe_task`]), all on watchdog threads at once, so code that
-/// never returns is reported as [`Attempt::Hangs`] after [`PROBE_TIMEOUT`] instead of
-/// hanging the caller. A hung thread keeps running until the process exits. Panics of
-/// student code print nothing while the probes run.
-pub fn probe_student(tasks: TaskSet) -> Vec<(TaskId, Attempt)> {
-    let _quiet = QuietPanics::new();
-    let deadline = Instant::now() + PROBE_TIMEOUT;
-    let pending: Vec<(TaskId, mpsc::Receiver<Attempt>)> = tasks
+/// ([`crate::grade::probe::probe_task`]), each task in a sandboxed worker process started by
+/// `launcher` ([`crate::grade::isolation`]), so this process never runs student code: code
+/// that never returns is reported as [`Attempt::Hangs`] after [`PROBE_TIMEOUT`], code that
+/// crashes its worker as [`Attempt::Panics`].
+pub fn probe_student(launcher: &Launcher, tasks: TaskSet) -> Vec<(TaskId, Attempt)> {
+    use crate::grade::isolation::WorkerFailure;
+    use crate::grade::worker::{ImplSpec, Job, JobKind, Record};
+    let tasks: Vec<TaskId> = tasks.iter().collect();
+    let jobs = tasks
         .iter()
-        .map(|task| {
-            let (tx, rx) = mpsc::channel();
-            let spawned = std::thread::Builder::new()
-                .name(format!("probe {task}"))
-                .spawn(move || {
-                    let outcome = catch_unwind(AssertUnwindSafe(|| {
-                        crate::grade::probe::probe_task(student(), task)
-                    }));
-                    let attempt = match outcome {
-                        Ok(()) => Attempt::Written,
-                        Err(p) if is_todo_panic(p.as_ref()) => Attempt::NotAttempted,
-                        Err(p) => Attempt::Panics(
-                            panic_message(p.as_ref())
-                                .unwrap_or("a non-string panic")
-                                .into(),
-                        ),
-                    };
-                    let _ = tx.send(attempt);
-                });
-            if let Err(e) = spawned {
-                let (tx, rx) = mpsc::channel();
-                let _ = tx.send(Attempt::Panics(format!("cannot start a probe thread: {e}")));
-                return (task, rx);
-            }
-            (task, rx)
+        .map(|task| Job {
+            nonce: crate::grade::isolation::nonce(),
+            implementation: ImplSpec::Student,
+            kind: JobKind::Probe {
+                task: task.name().into(),
+            },
+            memory_limit: crate::grade::runner::DEFAULT_MEMORY_LIMIT,
         })
         .collect();
-    pending
+    let options = crate::grade::runner::GradeOptions {
+        timeout: PROBE_TIMEOUT,
+        ..Default::default()
+    };
+    let runs = crate::grade::runner::run_all(launcher, jobs, &options);
+    tasks
         .into_iter()
-        .map(|(task, rx)| {
-            let left = deadline.saturating_duration_since(Instant::now());
-            (task, rx.recv_timeout(left).unwrap_or(Attempt::Hangs))
+        .zip(runs)
+        .map(|(task, run)| {
+            let attempt = match run.outcome {
+                Ok(Record::Attempted { attempt }) => attempt,
+                Ok(other) => Attempt::Panics(format!("the probe answered {other:?}")),
+                Err(WorkerFailure::Student(reason)) if reason.starts_with("timed out") => {
+                    Attempt::Hangs
+                }
+                Err(WorkerFailure::Student(reason) | WorkerFailure::Grader(reason)) => {
+                    Attempt::Panics(reason)
+                }
+            };
+            (task, attempt)
         })
         .collect()
 }
 
 /// True when the student has written `task`: its functions no longer stop at `todo!()`
 /// (code that panics or hangs counts as written; see [`probe_student`]).
-pub fn student_has_attempted(task: TaskId) -> bool {
-    probe_student(std::iter::once(task).collect())
+pub fn student_has_attempted(launcher: &Launcher, task: TaskId) -> bool {
+    probe_student(launcher, std::iter::once(task).collect())
         .iter()
         .all(|(_, a)| a.attempted())
 }
 
 /// Every task that [`student_has_attempted`], probed all at once.
-pub fn student_attempted() -> TaskSet {
-    probe_student(TaskSet::all())
+pub fn student_attempted(launcher: &Launcher) -> TaskSet {
+    probe_student(launcher, TaskSet::all())
         .into_iter()
         .filter(|(_, a)| a.attempted())
         .map(|(t, _)| t)
@@ -187,8 +186,8 @@ pub fn student_attempted() -> TaskSet {
 
 /// Every task whose student code returns on the probe (not a stub, no panic, no hang): what
 /// `--impl mixed` takes from the student.
-pub fn student_written() -> TaskSet {
-    probe_student(TaskSet::all())
+pub fn student_written(launcher: &Launcher) -> TaskSet {
+    probe_student(launcher, TaskSet::all())
         .into_iter()
         .filter(|(_, a)| *a == Attempt::Written)
         .map(|(t, _)| t)

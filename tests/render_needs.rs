@@ -144,7 +144,11 @@ fn the_needs_command_prints_tasks_and_subsystems() {
 
 #[test]
 fn student_renders_stop_on_unwritten_tasks() {
-    install();
+    let launcher = pbrlab::grade::isolation::Launcher {
+        program: env!("CARGO_BIN_EXE_pbrlab").into(),
+        args: vec!["grade-worker".into()],
+        env: Vec::new(),
+    };
     let dir = tempfile::tempdir().unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
         .args([
@@ -160,7 +164,7 @@ fn student_renders_stop_on_unwritten_tasks() {
         .needs()
         .all_tasks()
         .iter()
-        .filter(|t| !pbrlab::implementation::student_has_attempted(*t))
+        .filter(|t| !pbrlab::implementation::student_has_attempted(&launcher, *t))
         .collect();
     if missing.is_empty() {
         assert!(out.status.success(), "{stderr}");
@@ -177,13 +181,4 @@ fn student_renders_stop_on_unwritten_tasks() {
             "nothing may be rendered"
         );
     }
-}
-
-/// Makes the shipped exercises and the reference the framework's implementations in this
-/// test process, as the `pbrlab` binary does at start.
-fn install() {
-    pbrlab::implementation::install(pbrlab::implementation::Implementations {
-        student: pbrlab_exercises::TASKS,
-        reference: Some(pbrlab_solutions::TASKS),
-    });
 }

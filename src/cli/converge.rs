@@ -116,7 +116,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ImplChoice::Reference => run_with(*crate::implementation::reference(), &args),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let imp = crate::implementation::mixed(crate::implementation::student_written());
+            let imp = crate::implementation::mixed(crate::implementation::student_written(
+                &crate::grade::isolation::Launcher::current_exe()?,
+            ));
             run_with(imp, &args)
         }
         #[cfg(not(feature = "solutions"))]

@@ -17,7 +17,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         bail!("this is already a handout: run `pbrlab handout` from the instructor repository");
     }
     // The exercises are copied as they are: they must still be the stubs.
-    let written: Vec<_> = student_attempted()
+    let written: Vec<_> = student_attempted(&crate::grade::isolation::Launcher::current_exe()?)
         .iter()
         .filter(|t| !task_functions(*t).is_empty())
         .map(|t| format!("exercises/{t}.rs"))

@@ -1,3 +1,5 @@
+use crate::grade::isolation::Launcher;
+use crate::grade::sandbox::{self, Policy, Protections};
 use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, probe_student, student};
 use crate::panics::QuietPanics;
 use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
@@ -61,7 +63,7 @@ fn scene_path(given: Option<&Path>) -> PathBuf {
 /// Refuses, naming each task and why (not implemented, panicking, or not returning), when
 /// the scene at `path` needs student code that cannot run yet.
 pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
-    let unusable: Vec<String> = probe_student(scene.needs().all_tasks())
+    let unusable: Vec<String> = probe_student(&Launcher::current_exe()?, scene.needs().all_tasks())
         .into_iter()
         .filter_map(|(t, attempt)| {
             let why = match attempt {
@@ -87,6 +89,26 @@ pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Enters the sandbox for a render of student code: nothing readable, the folders of the
+/// image and of the statistics file writable (created first), no processes, no network.
+fn sandbox_render(output: &Path, stats: Option<&Path>) -> Result<Protections> {
+    let mut writable = Vec::new();
+    for file in std::iter::once(output).chain(stats) {
+        let dir = match file.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+        writable.push(dir);
+    }
+    Ok(sandbox::enter(&Policy {
+        memory_limit: 0,
+        cpu_seconds: 0,
+        readable: Vec::new(),
+        writable,
+    }))
+}
+
 /// Renders a scene from the command line.
 pub fn run(args: Args) -> Result<()> {
     let path = scene_path(args.scene.as_deref());
@@ -107,32 +129,25 @@ pub fn run(args: Args) -> Result<()> {
         } else {
             ImplChoice::Student
         });
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0))
-        .stack_size(64 << 20)
-        .build()
-        .context("cannot start the rendering threads")?;
     let output_path = args.output.clone().unwrap_or_else(|| {
         let stem = path
             .file_stem()
             .map_or("render".into(), |s| s.to_string_lossy().into_owned());
         PathBuf::from("renders").join(format!("{stem}.exr"))
     });
-    let job = Job {
-        scene: &scene,
-        output: &output_path,
-        progress: !args.quiet,
-    };
-    let out = match choice {
+    if choice != ImplChoice::Student && crate::implementation::try_reference().is_none() {
+        bail!("this build has no reference solutions: use `--impl student`")
+    }
+    // What renders: the student's code, the reference, or the reference with the tasks the
+    // student has written (probed in workers, before the sandbox forbids new processes).
+    let table = match choice {
         ImplChoice::Student => {
             require_student_tasks(&scene, &path)?;
-            pool.install(|| job.run(student()))?
+            *student()
         }
-        #[cfg(feature = "solutions")]
-        ImplChoice::Reference => pool.install(|| job.run(crate::implementation::reference()))?,
-        #[cfg(feature = "solutions")]
+        ImplChoice::Reference => *crate::implementation::reference(),
         ImplChoice::Mixed => {
-            let mine = crate::implementation::student_written();
+            let mine = crate::implementation::student_written(&Launcher::current_exe()?);
             let used: Vec<&str> = scene
                 .needs()
                 .all_tasks()
@@ -148,13 +163,28 @@ pub fn run(args: Args) -> Result<()> {
                     used.join(", ")
                 }
             );
-            pool.install(|| job.run(&crate::implementation::mixed(mine)))?
-        }
-        #[cfg(not(feature = "solutions"))]
-        ImplChoice::Reference | ImplChoice::Mixed => {
-            bail!("this build has no reference solutions: use `--impl student`")
+            crate::implementation::mixed(mine)
         }
     };
+    if choice != ImplChoice::Reference {
+        // From here on this process runs student code: it may write the image and nothing
+        // else (the scene is loaded, the probes ran in workers, no thread exists yet).
+        let protections = sandbox_render(&output_path, args.stats.as_deref())?;
+        if !protections.complete() {
+            eprintln!("warning: the render's sandbox is incomplete: {protections}");
+        }
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0))
+        .stack_size(64 << 20)
+        .build()
+        .context("cannot start the rendering threads")?;
+    let job = Job {
+        scene: &scene,
+        output: &output_path,
+        progress: !args.quiet,
+    };
+    let out = pool.install(|| job.run(&table))?;
     let s = &out.stats;
     if s.rejected_samples > 0 {
         eprintln!(

@@ -51,13 +51,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     let timeout = Duration::from_secs_f64(args.timeout);
+    let launcher = Launcher::current_exe()?;
     let (spec, label, reference_tasks) = match args.implementation {
         ImplChoice::Student => (ImplSpec::Student, "student", Vec::new()),
         #[cfg(feature = "solutions")]
         ImplChoice::Reference => (ImplSpec::Reference, "reference", Vec::new()),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let student = crate::implementation::student_attempted();
+            let student = crate::implementation::student_attempted(&launcher);
             let reference: Vec<TaskId> = tasks
                 .iter()
                 .copied()
@@ -73,7 +74,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("this build has no reference solutions; use --impl student")
         }
     };
-    let launcher = Launcher::current_exe()?;
     if args.format == Format::Text {
         println!(
             "{:<44} {:<15} {:<36} {:<36} verdict",

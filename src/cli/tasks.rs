@@ -1,6 +1,8 @@
 use crate::grade::history;
+use crate::grade::isolation::Launcher;
 use crate::grade::verdict::{GradeReport, TaskStatus};
-use crate::implementation::student_has_attempted;
+use crate::implementation::student_attempted;
+use crate::task_set::TaskSet;
 use crate::worksheet::{TaskId, task_functions};
 
 /// Arguments of `pbrlab tasks`.
@@ -8,8 +10,9 @@ use crate::worksheet::{TaskId, task_functions};
 pub struct Args {}
 
 /// The status column of a task: the last grade's verdict when there is one (older than the
-/// code, maybe: the table says when it was graded), otherwise whether the stub is replaced.
-fn status(task: TaskId, last: Option<&GradeReport>) -> String {
+/// code, maybe: the table says when it was graded), otherwise whether the stub is replaced
+/// (`attempted`, probed in workers).
+fn status(task: TaskId, last: Option<&GradeReport>, attempted: TaskSet) -> String {
     match last.and_then(|r| r.task(task.name())) {
         Some(t) if t.max_points > 0.0 => {
             let stale = if changed_since_grade(task) {
@@ -26,7 +29,7 @@ fn status(task: TaskId, last: Option<&GradeReport>) -> String {
         }
         Some(t) if t.status == TaskStatus::NoChecks => t.status.label(),
         _ if task_functions(task).is_empty() => "arrives with the renderer".into(),
-        _ if student_has_attempted(task) => "implemented, not graded yet".into(),
+        _ if attempted.contains(task) => "implemented, not graded yet".into(),
         _ => "not attempted".into(),
     }
 }
@@ -44,6 +47,7 @@ fn changed_since_grade(task: TaskId) -> bool {
 /// is one, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
     let last = history::load().filter(|r| r.implementation != "reference");
+    let attempted = student_attempted(&Launcher::current_exe()?);
     println!("{:<16} {:<62} {:>6}  status", "task", "title", "points");
     let mut total = 0;
     for task in TaskId::ALL {
@@ -54,7 +58,7 @@ pub fn run(_args: Args) -> anyhow::Result<()> {
             info.id,
             info.title,
             info.points,
-            status(task, last.as_ref())
+            status(task, last.as_ref(), attempted)
         );
     }
     println!("{:<16} {:<62} {:>6}", "total", "", total);

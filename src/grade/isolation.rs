@@ -161,7 +161,7 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             memory_limit: job.memory_limit,
             cpu_seconds: cpu_seconds(timeout),
             readable: vec![crate::repository_root().join("scenes")],
-            scratch: Some(scratch.path().to_path_buf()),
+            writable: vec![scratch.path().to_path_buf()],
         },
         job,
     };

@@ -99,7 +99,7 @@ fn hidden_cases(_task: TaskId, _seed: u64) -> anyhow::Result<Vec<super::case::Va
 pub const DEFAULT_MEMORY_LIMIT: u64 = 4 << 30;
 
 /// Runs `jobs` with `options.jobs` workers at a time and `options.timeout` each.
-fn run_all(
+pub fn run_all(
     launcher: &Launcher,
     jobs: Vec<Job>,
     options: &GradeOptions,
@@ -167,7 +167,14 @@ pub fn probe_attempted(launcher: &Launcher, options: &GradeOptions) -> Vec<TaskI
     run_all(launcher, jobs, &probe_options)
         .into_iter()
         .zip(TaskId::ALL)
-        .filter(|(run, _)| !matches!(run.outcome, Ok(Record::Attempted { attempted: false })))
+        .filter(|(run, _)| {
+            !matches!(
+                run.outcome,
+                Ok(Record::Attempted {
+                    attempt: crate::implementation::Attempt::NotAttempted
+                })
+            )
+        })
         .map(|(_, task)| task)
         .collect()
 }

@@ -3,7 +3,7 @@
 //!
 //! - **Landlock** (through the `landlock` crate): the file system is closed except for reading
 //!   what the job needs (the scene folder) and reading and writing the job's private
-//!   temporary directory; no TCP bind or connect; no signals to processes outside the
+//!   temporary directory (a render of the student's code: the image's folder); no TCP bind or connect; no signals to processes outside the
 //!   sandbox (the grader) and no abstract UNIX sockets outside it. Reading
 //!   `/proc/self/mem`, the repository, `target/` or the stored expected data fails.
 //! - **seccomp** (through `seccompiler`): no new processes (`fork`, `vfork`, `clone`
@@ -28,8 +28,9 @@ pub struct Policy {
     pub cpu_seconds: u64,
     /// Folders the worker may read (the scenes).
     pub readable: Vec<PathBuf>,
-    /// The worker's private temporary directory: readable and writable.
-    pub scratch: Option<PathBuf>,
+    /// Folders the worker may read and write: its private temporary directory (and, for a
+    /// render of the student's code, the folder the image goes to).
+    pub writable: Vec<PathBuf>,
 }
 
 /// The largest file a worker may write, in bytes.
@@ -72,7 +73,7 @@ impl std::fmt::Display for Protections {
 const IN_FORCE: &str = "in force";
 
 /// Puts `policy` in force for this process and every thread it starts later. Call before
-/// any other thread exists.
+/// any other thread exists: Landlock restricts the calling thread and the threads it starts.
 pub fn enter(policy: &Policy) -> Protections {
     // Limits first: they need no privileges and must not depend on the others.
     let limits = describe(limit_resources(policy));
@@ -139,9 +140,10 @@ mod landlock {
                 &policy.readable,
                 AccessFs::from_read(ABI),
             ))?;
-        if let Some(scratch) = &policy.scratch {
-            ruleset = ruleset.add_rules(path_beneath_rules([scratch], AccessFs::from_all(ABI)))?;
-        }
+        ruleset = ruleset.add_rules(path_beneath_rules(
+            &policy.writable,
+            AccessFs::from_all(ABI),
+        ))?;
         // Writing to /dev/null is harmless and some code does it.
         ruleset = ruleset.add_rules(path_beneath_rules(
             ["/dev/null"],

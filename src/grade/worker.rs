@@ -131,8 +131,8 @@ pub enum Record {
     },
     /// The answer to a probe.
     Attempted {
-        /// True unless the task still stops at its `todo!()`.
-        attempted: bool,
+        /// What the probe found.
+        attempt: crate::implementation::Attempt,
     },
     /// The result of a stability case.
     Stability {
@@ -173,9 +173,10 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
             })
             .ok_or_else(|| anyhow!("the stability catalogue has no case `{case}`")),
         JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
-            attempted: match panics::catch(|| super::probe::probe_task(t, task)) {
-                Ok(()) => true,
-                Err(p) => !p.is_todo_of(task),
+            attempt: match panics::catch(|| super::probe::probe_task(t, task)) {
+                Ok(()) => crate::implementation::Attempt::Written,
+                Err(p) if p.is_todo_of(task) => crate::implementation::Attempt::NotAttempted,
+                Err(p) => crate::implementation::Attempt::Panics(p.message),
             },
         }),
     };
