@@ -78,11 +78,6 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
         height: args.height,
         ..LoadOptions::default()
     };
-    if args.implementation == ImplChoice::Student {
-        // Fail before the (long) reference render rather than at the first estimate.
-        let scene = Scene::load(path, &base).map_err(|e| anyhow!("{e}"))?;
-        super::render::require_student_tasks(&scene, path)?;
-    }
     let spp = args.reference_spp.unwrap_or(max_spp.saturating_mul(16));
     if let Some(file) = &args.reference {
         return scene_study::<T, T>(path, tasks, &base, ReferenceSource::File(file), &args.out);
@@ -111,7 +106,17 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
 /// Runs the study, writes the CSV and the plot, and prints the slope table.
 pub fn run(args: Args) -> anyhow::Result<()> {
     match args.implementation {
-        ImplChoice::Student => run_with(*crate::implementation::student(), &args),
+        ImplChoice::Student => {
+            let path = Path::new(&args.scene);
+            if path.is_file() {
+                // Fail before the (long) reference render rather than at the first estimate.
+                let scene =
+                    Scene::load(path, &LoadOptions::default()).map_err(|e| anyhow!("{e}"))?;
+                super::render::require_student_tasks(&scene, path)?;
+            }
+            sandbox(&args)?;
+            run_with(*crate::implementation::student(), &args)
+        }
         #[cfg(feature = "solutions")]
         ImplChoice::Reference => run_with(*crate::implementation::reference(), &args),
         #[cfg(feature = "solutions")]
@@ -119,6 +124,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             let imp = crate::implementation::mixed(crate::implementation::student_written(
                 &crate::grade::isolation::Launcher::current_exe()?,
             ));
+            sandbox(&args)?;
             run_with(imp, &args)
         }
         #[cfg(not(feature = "solutions"))]
@@ -126,6 +132,36 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("this build has no reference solutions; use --impl student")
         }
     }
+}
+
+/// Enters the sandbox before a study runs student code: the scene's folder, the scenes and a
+/// given reference image readable, the output folder writable, no processes, no network.
+fn sandbox(args: &Args) -> anyhow::Result<()> {
+    use crate::grade::sandbox::{Policy, enter};
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("creating {}", args.out.display()))?;
+    let folder = |p: &Path| match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let mut readable = vec![crate::repository_root().join("scenes")];
+    let scene = Path::new(&args.scene);
+    if scene.is_file() {
+        readable.push(folder(scene));
+    }
+    readable.extend(args.reference.as_deref().map(folder));
+    // The plot's font is read now: the sandbox closes the system's font folders.
+    let _ = crate::converge::plot::ensure_font();
+    let protections = enter(&Policy {
+        memory_limit: 0,
+        cpu_seconds: 0,
+        readable,
+        writable: vec![args.out.clone()],
+    });
+    if !protections.complete() {
+        eprintln!("warning: the study's sandbox is incomplete: {protections}");
+    }
+    Ok(())
 }
 
 fn run_with<T: Tasks + Clone + Send + 'static>(tasks: T, args: &Args) -> anyhow::Result<()> {
