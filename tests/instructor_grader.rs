@@ -206,3 +206,28 @@ fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() 
         .unwrap();
     assert!(!hidden_check.passed);
 }
+
+#[test]
+fn a_worker_receives_the_calls_of_every_case_but_no_expected_value() {
+    use pbrlab::grade::catalogue::{evaluate, hidden_inputs};
+    for (task, mut input) in inputs(1) {
+        input.hidden = evaluate(&hidden_inputs(task, 77), &Reference).unwrap();
+        let worker = input.for_worker();
+        let calls: usize = worker.values.iter().map(|v| v.calls.len()).sum();
+        let cases = input.data.as_ref().map_or(0, |d| d.values.len()) + input.hidden.len();
+        assert_eq!(calls, cases, "{task}: every case's call goes to the worker");
+        let json = serde_json::to_string(&worker).unwrap();
+        assert!(!json.contains("\"expected\""), "{task}: {json}");
+        for case in &input.hidden {
+            assert!(
+                worker
+                    .values
+                    .iter()
+                    .flat_map(|v| &v.calls)
+                    .any(|c| *c == case.call),
+                "{task}: hidden case {} missing",
+                case.name
+            );
+        }
+    }
+}

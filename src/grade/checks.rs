@@ -1,15 +1,17 @@
 //! Every check of one task, run on one implementation: the values, sampling, estimator and
 //! stability checks that fit the task, with the task's points split between them.
 
+use super::call::Call;
 use super::call::SampleCall;
 use super::case::ValueCase;
 use super::catalogue::{self, EstimatorSpec};
 use super::estimator;
-use super::expected::TaskData;
+use super::expected::{SamplingCase, TaskData};
 use super::sampling::{self, SamplingFailure, SamplingTarget};
 use super::stability;
 use super::stats::sidak;
 use super::values;
+use super::values::ValueOutputs;
 use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
 use crate::panics;
 use crate::sampling::Sampler;
@@ -47,6 +49,72 @@ pub struct TaskInput {
     pub seed: u64,
 }
 
+impl TaskInput {
+    /// What a worker gets of this input: the value cases' calls without their expected
+    /// outputs (those stay with the grader, hidden ones included), the sampler setups and
+    /// the seed.
+    pub fn for_worker(&self) -> WorkerInput {
+        let calls = |cases: &[ValueCase]| cases.iter().map(|c| c.call.clone()).collect();
+        let data = self.data.clone().unwrap_or_default();
+        let mut values = Vec::new();
+        if !data.values.is_empty() {
+            values.push(ValueCalls {
+                check: VALUES.into(),
+                calls: calls(&data.values),
+            });
+        }
+        if !self.hidden.is_empty() {
+            values.push(ValueCalls {
+                check: HIDDEN_VALUES.into(),
+                calls: calls(&self.hidden),
+            });
+        }
+        WorkerInput {
+            values,
+            sampling: data.sampling,
+            seed: self.seed,
+        }
+    }
+
+    /// The value cases of the check named `check`, with their visibility.
+    fn value_cases(&self, check: &str) -> Option<(&[ValueCase], Visibility)> {
+        match check {
+            VALUES => self
+                .data
+                .as_ref()
+                .map(|d| (d.values.as_slice(), Visibility::Visible)),
+            HIDDEN_VALUES => Some((self.hidden.as_slice(), Visibility::Hidden)),
+            _ => None,
+        }
+    }
+}
+
+/// The name of the values check on the stored cases.
+const VALUES: &str = "values";
+
+/// The name of the values check on the hidden cases.
+const HIDDEN_VALUES: &str = "values (hidden cases)";
+
+/// The calls of one values check, without their expected outputs.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ValueCalls {
+    /// The check's name.
+    pub check: String,
+    /// The calls, in order.
+    pub calls: Vec<Call>,
+}
+
+/// What a worker needs to run a task's checks: no expected value.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct WorkerInput {
+    /// The calls of each values check.
+    pub values: Vec<ValueCalls>,
+    /// Sampler setups with the reference distribution.
+    pub sampling: Vec<SamplingCase>,
+    /// Seed of the statistical checks.
+    pub seed: u64,
+}
+
 /// What grading a task reports as it goes, so that a worker that dies part-way through can
 /// say where, and the checks that finished before are not lost.
 #[derive(Debug)]
@@ -55,24 +123,54 @@ pub enum Progress<'a> {
     Starting(&'a str),
     /// A check has finished.
     Finished(&'a CheckResult),
+    /// The calls of a values check have returned.
+    Evaluated(&'a ValueOutputs),
 }
 
 /// Where grading reports its [`Progress`].
 pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
 
-/// Runs every check of `task` on `t`.
+/// Runs every check of `task` on `t` in this process: [`run_task`] then [`judge_task`].
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
-    grade_task_reporting(t, task, input, &mut |_| {})
+    let (checks, values) = run_task(t, task, &input.for_worker(), &mut |_| {});
+    judge_task(input, checks, &values)
 }
 
-/// [`grade_task`], telling `progress` before each check (and each stability case) runs and
-/// after each check finishes.
-pub fn grade_task_reporting<T: Tasks>(
+/// The grader's half: judges a worker's value outputs against `input`'s expected outputs
+/// and puts those checks first, then the worker's other checks, with the kinds' weights.
+pub fn judge_task(
+    input: &TaskInput,
+    checks: Vec<CheckResult>,
+    values: &[ValueOutputs],
+) -> Vec<CheckResult> {
+    let mut judged: Vec<CheckResult> = values
+        .iter()
+        .filter_map(|outputs| {
+            let (cases, visibility) = input.value_cases(&outputs.check)?;
+            Some(values::judge(cases, outputs, visibility))
+        })
+        .collect();
+    judged.extend(checks);
+    spread_weights(&mut judged);
+    judged
+}
+
+/// The worker's half: evaluates the value calls of `input` (outputs only, judged by the
+/// grader) and runs the sampling, estimator and stability checks of `task` on `t`, telling
+/// `progress` before each check (and each stability case) runs and after each finishes.
+pub fn run_task<T: Tasks>(
     t: &T,
     task: TaskId,
-    input: &TaskInput,
+    input: &WorkerInput,
     progress: &mut ProgressSink<'_>,
-) -> Vec<CheckResult> {
+) -> (Vec<CheckResult>, Vec<ValueOutputs>) {
+    let mut values = Vec::new();
+    for calls in &input.values {
+        progress(Progress::Starting(&calls.check));
+        let outputs = values::evaluate(&calls.check, &calls.calls, t);
+        progress(Progress::Evaluated(&outputs));
+        values.push(outputs);
+    }
     let mut checks = Vec::new();
     let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
         progress(Progress::Starting(name));
@@ -80,26 +178,10 @@ pub fn grade_task_reporting<T: Tasks>(
         progress(Progress::Finished(&result));
         checks.push(result);
     };
-    let data = input.data.clone().unwrap_or_default();
-    if !data.values.is_empty() {
-        record("values", &mut |_| {
-            values::run("values", &data.values, Visibility::Visible, t)
-        });
-    }
-    if !input.hidden.is_empty() {
-        record("values (hidden cases)", &mut |_| {
-            values::run(
-                "values (hidden cases)",
-                &input.hidden,
-                Visibility::Hidden,
-                t,
-            )
-        });
-    }
     let estimators = catalogue::estimators(task, t);
-    let statistical = data.sampling.len() + estimators.len();
+    let statistical = input.sampling.len() + estimators.len();
     let alpha = sidak(TASK_ALPHA, statistical);
-    for (i, case) in data.sampling.iter().enumerate() {
+    for (i, case) in input.sampling.iter().enumerate() {
         let seed = (input.seed, 100 + i as u64);
         record(&format!("sampling: {}", case.call), &mut |_| {
             sampling_check(t, &case.call, &case.target, alpha, seed)
@@ -138,8 +220,7 @@ pub fn grade_task_reporting<T: Tasks>(
             })
         });
     }
-    spread_weights(&mut checks);
-    checks
+    (checks, values)
 }
 
 /// Gives each kind its weight, split between the kind's checks.

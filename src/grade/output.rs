@@ -12,15 +12,17 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 /// A task function's result: a number, a vector, nothing (`None`) or a record of named fields.
+/// Non-finite numbers (a student's NaN) are written as the strings `"NaN"`, `"inf"` and
+/// `"-inf"`, so an output crosses the worker's pipe unchanged.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum Output {
     /// `None`.
     Nothing,
     /// A scalar.
-    Number(f64),
+    Number(#[serde(with = "super::lenient_f64")] f64),
     /// A list of scalars (a `Vec3`, a per-interface list, …).
-    Numbers(Vec<f64>),
+    Numbers(#[serde(with = "super::lenient_f64::seq")] Vec<f64>),
     /// A struct, by field name.
     Record(BTreeMap<String, Output>),
 }
@@ -224,5 +226,27 @@ mod tests {
         assert_eq!(back, out);
         let v: Output = serde_json::from_str("[0.6, -0.8, 0.0]").unwrap();
         assert_eq!(v, Vec3::new(0.6, -0.8, 0.0).into_output());
+    }
+
+    #[test]
+    fn non_finite_outputs_cross_the_pipe_unchanged() {
+        // A student's NaN must reach the grader as NaN, not as `None` (JSON's null).
+        let out = Output::Numbers(vec![f64::NAN, 1.0, f64::INFINITY]);
+        let json = serde_json::to_string(&out).unwrap();
+        let Output::Numbers(back) = serde_json::from_str::<Output>(&json).unwrap() else {
+            panic!("{json} came back as another shape");
+        };
+        assert!(
+            back[0].is_nan() && back[1] == 1.0 && back[2] == f64::INFINITY,
+            "{json}"
+        );
+        let nan: Output =
+            serde_json::from_str(&serde_json::to_string(&Output::Number(f64::NAN)).unwrap())
+                .unwrap();
+        assert!(matches!(nan, Output::Number(x) if x.is_nan()), "{nan:?}");
+        assert_eq!(
+            serde_json::from_str::<Output>("null").unwrap(),
+            Output::Nothing
+        );
     }
 }

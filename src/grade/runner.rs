@@ -1,7 +1,7 @@
 //! Grading a set of tasks: load the expected data, decide which implementation grades which
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
-use super::checks::{TaskInput, score};
+use super::checks::{TaskInput, judge_task, score};
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
 use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
@@ -236,21 +236,27 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
             outcomes.push((task.name().to_string(), no_checks(task)));
             continue;
         }
-        graded.push(task);
         jobs.push(Job {
             nonce: isolation::nonce(),
             implementation: spec_for(task, options, &attempted)?,
             kind: JobKind::Grade {
                 task: task.name().into(),
-                input,
+                input: input.for_worker(),
             },
             memory_limit: options.memory_limit,
         });
+        // The expected outputs stay here; the worker gets the calls only.
+        graded.push((task, input));
     }
     let mut sandbox = std::collections::BTreeSet::new();
-    for (&task, run) in graded.iter().zip(run_all(launcher, jobs, options)) {
+    for ((task, input), run) in graded.iter().zip(run_all(launcher, jobs, options)) {
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
-        outcomes.push((task.name().to_string(), outcome(task, run)));
+        let mut outcome = outcome(*task, input, run);
+        if options.hidden_seed.is_some() && !outcome.output.is_empty() {
+            // What the code printed could carry the hidden inputs out.
+            outcome.output = HIDDEN_OUTPUT.into();
+        }
+        outcomes.push((task.name().to_string(), outcome));
     }
     outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
     let mut tasks: Vec<TaskOutcome> = outcomes.into_iter().map(|(_, o)| o).collect();
@@ -368,7 +374,7 @@ fn grade_renders(
     for ((i, _), run) in jobs.iter().zip(runs) {
         let check = super::renders::RENDER_CHECKS[*i];
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
-        let mut outcome = outcome(TaskId::PathTrace, run);
+        let mut outcome = outcome(TaskId::PathTrace, &TaskInput::default(), run);
         outcome.task = scene_entry(check.scene);
         outcome.max_points = check.points;
         outcome.points = if outcome.status == TaskStatus::Passed {
@@ -403,11 +409,17 @@ fn has_code_checks(task: TaskId) -> bool {
         || !crate::stability::cases_for::<crate::worksheet::TaskFns>(task).is_empty()
 }
 
-/// A task's outcome from its worker run.
-pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
+/// What a task's report shows instead of the code's output when hidden cases were graded.
+pub const HIDDEN_OUTPUT: &str =
+    "(the code's output is not shown: hidden cases were graded in the same run)\n";
+
+/// A task's outcome from its worker run: the worker's value outputs judged against
+/// `input`'s expected ones, and the worker's other checks.
+pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> TaskOutcome {
     let max_points = task.info().points as f64;
     let (status, points, checks) = match run.outcome {
-        Ok(Record::Checks { checks }) => {
+        Ok(Record::Checks { checks, values }) => {
+            let checks = judge_task(input, checks, &values);
             let (status, points) = score(task, &checks);
             (status, points, checks)
         }
@@ -426,7 +438,8 @@ pub fn outcome(task: TaskId, run: isolation::WorkerRun) -> TaskOutcome {
                 Some(step) => format!("{reason}, while running {step}"),
                 None => reason,
             };
-            (TaskStatus::Crashed { reason }, 0.0, run.finished)
+            let finished = judge_task(input, run.finished, &run.finished_values);
+            (TaskStatus::Crashed { reason }, 0.0, finished)
         }
     };
     let max_points = if status == TaskStatus::NoChecks {

@@ -1,26 +1,71 @@
 //! The values check: a task's functions on fixed worksheet inputs and random inputs,
-//! against the reference's stored outputs.
+//! against the reference's outputs.
+//!
+//! In two halves, so the process that runs student code never sees an expected value: a
+//! worker [`evaluate`]s the calls (inputs only) and sends back what each returned; the
+//! grader [`judge`]s those outputs against the expected ones.
 
+use super::call::Call;
 use super::case::{Rule, ValueCase};
 use super::output::{Output, fmt_num};
 use super::tolerance::Error;
 use super::verdict::{CheckKind, CheckResult, Visibility, Worst};
-use crate::panics;
+use crate::panics::{self, Panic};
 use crate::worksheet::Tasks;
+use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
-/// Calls `t` on every case and judges each output; every failure message names the call,
-/// its input, what came back, what was expected and the case's note.
-pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tasks) -> CheckResult {
+/// What one call returned: its output, or the panic that stopped it.
+pub type Evaluated = Result<Output, Panic>;
+
+/// The outputs of one values check, as a worker sends them.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ValueOutputs {
+    /// The check's name (`values`, `values (hidden cases)`).
+    pub check: String,
+    /// One per call, in order.
+    pub outputs: Vec<Evaluated>,
+    /// Seconds the calls took.
+    pub seconds: f64,
+}
+
+/// Calls `t` on every call (the worker's half).
+pub fn evaluate(check: &str, calls: &[Call], t: &impl Tasks) -> ValueOutputs {
     let start = Instant::now();
-    let mut result = CheckResult::new(name, CheckKind::Values);
+    let outputs = calls
+        .iter()
+        .map(|call| panics::catch(|| call.eval(t)))
+        .collect();
+    ValueOutputs {
+        check: check.into(),
+        outputs,
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// Calls `t` on every case and judges each output, in this process.
+pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tasks) -> CheckResult {
+    let calls: Vec<Call> = cases.iter().map(|c| c.call.clone()).collect();
+    judge(cases, &evaluate(name, &calls, t), visibility)
+}
+
+/// Judges a worker's `outputs` of `cases` (the grader's half); every failure message names
+/// the call, its input, what came back, what was expected and the case's note. Missing
+/// outputs (a worker that sent fewer than it was asked for) fail their cases.
+pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility) -> CheckResult {
+    let mut result = CheckResult::new(&outputs.check, CheckKind::Values);
     result.visibility = visibility;
     result.total = cases.len();
     let mut worst: Option<Worst> = None;
     let mut ratios = Vec::new();
-    for case in cases {
-        let outcome = panics::catch(|| case.call.eval(t));
-        let (error, failure) = match &outcome {
+    let missing = Err(Panic {
+        message: "the worker sent no output for this case".into(),
+        location: None,
+        todo_in: None,
+    });
+    for (i, case) in cases.iter().enumerate() {
+        let outcome = outputs.outputs.get(i).unwrap_or(&missing);
+        let (error, failure) = match outcome {
             Ok(got) => match case.judge(got) {
                 Ok(error) => (error, None),
                 Err(problem) => {
@@ -63,7 +108,7 @@ pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tas
             fmt_num(factor)
         );
     }
-    result.seconds = start.elapsed().as_secs_f64();
+    result.seconds = outputs.seconds;
     result
 }
 

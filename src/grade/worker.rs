@@ -8,8 +8,9 @@
 //! grader accepts only a line with its nonce, and treats a worker that exits without one as
 //! having crashed.
 
-use super::checks::{Progress, ProgressSink, TaskInput, grade_task_reporting};
+use super::checks::{Progress, ProgressSink, WorkerInput, run_task};
 use super::sandbox::{self, Policy};
+use super::values::ValueOutputs;
 use super::verdict::CheckResult;
 use crate::panics;
 use crate::stability::runner::CaseResult;
@@ -29,6 +30,10 @@ pub const STEP_MARKER: &str = "PBRLAB-STEP";
 /// The marker of the line a worker prints when a check finishes, followed by the nonce and
 /// the check as JSON: when the worker dies later, the checks that finished are kept.
 pub const CHECK_MARKER: &str = "PBRLAB-CHECK";
+
+/// The marker of the line a worker prints when the calls of a values check have returned,
+/// followed by the nonce and their [`ValueOutputs`] as JSON (the grader judges them).
+pub const VALUES_MARKER: &str = "PBRLAB-VALUES";
 
 /// The marker of the line a worker prints once it has its job and has entered its sandbox,
 /// before any student code runs, followed by the nonce and the [`sandbox::Protections`] in
@@ -73,8 +78,8 @@ pub enum JobKind {
     Grade {
         /// The task id.
         task: String,
-        /// Its expected data, hidden cases and seed.
-        input: TaskInput,
+        /// Its calls, sampler setups and seed: no expected value.
+        input: WorkerInput,
     },
     /// Only tell whether the student has written the task.
     Probe {
@@ -126,8 +131,11 @@ pub struct Job {
 pub enum Record {
     /// The checks of a graded task.
     Checks {
-        /// Every check that ran.
+        /// Every check that ran in the worker.
         checks: Vec<CheckResult>,
+        /// The outputs of the values checks, for the grader to judge.
+        #[serde(default)]
+        values: Vec<ValueOutputs>,
     },
     /// The answer to a probe.
     Attempted {
@@ -150,8 +158,9 @@ pub enum Record {
 pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>) -> Record {
     let task_of = |name: &str| TaskId::parse(name).map_err(|e| anyhow!(e));
     let result = match kind {
-        JobKind::Grade { task, input } => task_of(task).map(|task| Record::Checks {
-            checks: grade_task_reporting(t, task, input, progress),
+        JobKind::Grade { task, input } => task_of(task).map(|task| {
+            let (checks, values) = run_task(t, task, input, progress);
+            Record::Checks { checks, values }
         }),
         JobKind::Render {
             scene,
@@ -164,6 +173,7 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
                 *seed,
                 report_dir.as_deref(),
             )],
+            values: Vec::new(),
         }),
         JobKind::Stability { case } => crate::stability::cases::<T>()
             .iter()
@@ -219,6 +229,10 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
             }
             Progress::Finished(check) => match serde_json::to_string(check) {
                 Ok(json) => format!("{CHECK_MARKER} {nonce} {json}"),
+                Err(_) => return,
+            },
+            Progress::Evaluated(outputs) => match serde_json::to_string(outputs) {
+                Ok(json) => format!("{VALUES_MARKER} {nonce} {json}"),
                 Err(_) => return,
             },
         };
