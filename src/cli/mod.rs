@@ -6,6 +6,7 @@ mod grade_worker;
 mod handout;
 mod hint;
 mod needs;
+mod rebuild;
 pub mod render;
 mod stability;
 mod tasks;
@@ -50,6 +51,21 @@ pub enum Command {
 
 /// Runs the command line.
 pub fn run(cli: Cli) -> anyhow::Result<()> {
+    // Commands that run the student's code run the code as it is now.
+    if matches!(
+        cli.command,
+        Some(
+            Command::Tasks(_)
+                | Command::Grade(_)
+                | Command::Handout(_)
+                | Command::Render(_)
+                | Command::Needs(_)
+                | Command::Stability(_)
+                | Command::Converge(_)
+        )
+    ) {
+        rebuild::ensure_current()?;
+    }
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),

@@ -1,0 +1,79 @@
+//! A binary older than the exercise files it links would grade, render or probe code the
+//! student has since changed. Before such a command runs, the binary compares the newest
+//! `exercises/*.rs` with its own file and, when an exercise is newer, rebuilds with cargo
+//! (only the student's crate and the link: about a second), compiler messages shown as
+//! cargo prints them, and runs the command again in the new binary.
+
+use anyhow::{Context, bail};
+use std::path::Path;
+use std::process::Command;
+use std::time::SystemTime;
+
+/// Set in the environment of the re-run, so a rebuild that does not refresh the binary
+/// cannot loop.
+const REBUILT: &str = "PBRLAB_REBUILT";
+
+/// The newest modification time of a `.rs` file in `dir`.
+fn newest_source(dir: &Path) -> Option<SystemTime> {
+    std::fs::read_dir(dir)
+        .ok()?
+        .flatten()
+        .filter(|e| e.path().extension().is_some_and(|x| x == "rs"))
+        .filter_map(|e| e.metadata().and_then(|m| m.modified()).ok())
+        .max()
+}
+
+/// Rebuilds and re-runs this command when an exercise file is newer than this binary;
+/// returns normally when the binary is current (or has just been rebuilt).
+pub fn ensure_current() -> anyhow::Result<()> {
+    if std::env::var_os(REBUILT).is_some() {
+        return Ok(());
+    }
+    let root = crate::repository_root();
+    let Some(source) = newest_source(&root.join("exercises")) else {
+        return Ok(());
+    };
+    let exe = std::env::current_exe().context("locating this binary")?;
+    let built = std::fs::metadata(&exe).and_then(|m| m.modified());
+    if built.is_ok_and(|b| b >= source) {
+        return Ok(());
+    }
+    eprintln!("exercises/ changed since this binary was built: rebuilding");
+    let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    cargo
+        .current_dir(root)
+        .args(["build", "--release", "--bin", "pbrlab"]);
+    if !cfg!(feature = "solutions") {
+        cargo.arg("--no-default-features");
+    }
+    let status = cargo
+        .status()
+        .context("running cargo to rebuild (is it on PATH?)")?;
+    if !status.success() {
+        bail!("the build failed: fix the error above and run the command again");
+    }
+    let err = exec_again(&exe);
+    Err(err).context(format!("running the rebuilt {}", exe.display()))
+}
+
+/// Replaces this process with `exe` and the same arguments.
+#[cfg(unix)]
+fn exec_again(exe: &Path) -> std::io::Error {
+    use std::os::unix::process::CommandExt;
+    Command::new(exe)
+        .args(std::env::args_os().skip(1))
+        .env(REBUILT, "1")
+        .exec()
+}
+
+#[cfg(not(unix))]
+fn exec_again(exe: &Path) -> std::io::Error {
+    match Command::new(exe)
+        .args(std::env::args_os().skip(1))
+        .env(REBUILT, "1")
+        .status()
+    {
+        Ok(status) => std::process::exit(status.code().unwrap_or(1)),
+        Err(e) => e,
+    }
+}
