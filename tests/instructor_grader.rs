@@ -208,7 +208,7 @@ fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() 
 }
 
 #[test]
-fn a_worker_receives_the_calls_of_every_case_but_no_expected_value() {
+fn a_worker_receives_every_call_and_sampler_but_no_expected_value_or_density() {
     use pbrlab::grade::catalogue::{evaluate, hidden_inputs};
     for (task, mut input) in inputs(1) {
         input.hidden = evaluate(&hidden_inputs(task, 77), &Reference).unwrap();
@@ -218,6 +218,12 @@ fn a_worker_receives_the_calls_of_every_case_but_no_expected_value() {
         assert_eq!(calls, cases, "{task}: every case's call goes to the worker");
         let json = serde_json::to_string(&worker).unwrap();
         assert!(!json.contains("\"expected\""), "{task}: {json}");
+        assert!(!json.contains("\"probabilities\""), "{task}: {json}");
+        assert_eq!(
+            worker.sampling.len(),
+            input.data.as_ref().map_or(0, |d| d.sampling.len()),
+            "{task}: every sampler goes to the worker"
+        );
         for case in &input.hidden {
             assert!(
                 worker

@@ -6,14 +6,14 @@ use super::call::SampleCall;
 use super::case::ValueCase;
 use super::catalogue::{self, EstimatorSpec};
 use super::estimator;
-use super::expected::{SamplingCase, TaskData};
-use super::sampling::{self, SamplingFailure, SamplingTarget};
+use super::expected::TaskData;
+use super::sampling::{self, HemisphereBins, SampleCounts, SamplingFailure, SamplingTarget};
 use super::stability;
 use super::stats::sidak;
 use super::values;
 use super::values::ValueOutputs;
 use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
-use crate::panics;
+use crate::panics::{self, Panic};
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
 use serde::{Deserialize, Serialize};
@@ -69,9 +69,18 @@ impl TaskInput {
                 calls: calls(&self.hidden),
             });
         }
+        let sampling = data
+            .sampling
+            .iter()
+            .map(|case| SamplingSetup {
+                call: case.call.clone(),
+                bins: case.target.bins,
+                may_reject: case.target.rejected > 0.0,
+            })
+            .collect();
         WorkerInput {
             values,
-            sampling: data.sampling,
+            sampling,
             seed: self.seed,
         }
     }
@@ -104,15 +113,48 @@ pub struct ValueCalls {
     pub calls: Vec<Call>,
 }
 
-/// What a worker needs to run a task's checks: no expected value.
+/// A sampler to draw from, and the cells to bin its directions in: no reference density.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SamplingSetup {
+    /// Which sampler, with which parameters.
+    pub call: SampleCall,
+    /// The cells.
+    pub bins: HemisphereBins,
+    /// True when the sampler may return no direction.
+    pub may_reject: bool,
+}
+
+/// What a worker needs to run a task's checks: no expected value, no reference density.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct WorkerInput {
     /// The calls of each values check.
     pub values: Vec<ValueCalls>,
-    /// Sampler setups with the reference distribution.
-    pub sampling: Vec<SamplingCase>,
+    /// The samplers of the sampling checks.
+    pub sampling: Vec<SamplingSetup>,
     /// Seed of the statistical checks.
     pub seed: u64,
+}
+
+/// What one sampling check's sampler produced in a worker: its binned directions, the
+/// first invalid sample, or the panic that stopped it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SampleOutputs {
+    /// Which of the task's sampling checks, in order.
+    pub index: usize,
+    /// The counts, or the invalid sample described.
+    pub outcome: Result<Result<SampleCounts, String>, Panic>,
+    /// Seconds the sampling took.
+    pub seconds: f64,
+}
+
+/// A worker's raw output for the grader to judge.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "raw", rename_all = "snake_case")]
+pub enum Raw {
+    /// The outputs of a values check.
+    Values(ValueOutputs),
+    /// The samples of a sampling check.
+    Samples(SampleOutputs),
 }
 
 /// What grading a task reports as it goes, so that a worker that dies part-way through can
@@ -123,8 +165,8 @@ pub enum Progress<'a> {
     Starting(&'a str),
     /// A check has finished.
     Finished(&'a CheckResult),
-    /// The calls of a values check have returned.
-    Evaluated(&'a ValueOutputs),
+    /// Raw outputs (a values check's, a sampling check's) are ready for the grader.
+    Raw(&'a Raw),
 }
 
 /// Where grading reports its [`Progress`].
@@ -132,22 +174,41 @@ pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
 
 /// Runs every check of `task` on `t` in this process: [`run_task`] then [`judge_task`].
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
-    let (checks, values) = run_task(t, task, &input.for_worker(), &mut |_| {});
-    judge_task(input, checks, &values)
+    let (checks, raw) = run_task(t, task, &input.for_worker(), &mut |_| {});
+    judge_task(task, input, checks, &raw)
 }
 
-/// The grader's half: judges a worker's value outputs against `input`'s expected outputs
-/// and puts those checks first, then the worker's other checks, with the kinds' weights.
+/// Significance of each statistical sub-test of `task`: [`TASK_ALPHA`] Šidák-split over its
+/// sampling and estimator checks.
+fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
+    sidak(TASK_ALPHA, sampling + catalogue::estimators(task, t).len())
+}
+
+/// The grader's half: judges a worker's raw outputs against `input` (value outputs against
+/// the expected outputs, sample counts against the reference density) and puts those checks
+/// first, then the worker's other checks, with the kinds' weights.
 pub fn judge_task(
+    task: TaskId,
     input: &TaskInput,
     checks: Vec<CheckResult>,
-    values: &[ValueOutputs],
+    raw: &[Raw],
 ) -> Vec<CheckResult> {
-    let mut judged: Vec<CheckResult> = values
+    let sampling = input
+        .data
+        .as_ref()
+        .map_or(&[][..], |d| d.sampling.as_slice());
+    let alpha = || statistical_alpha(task, sampling.len(), crate::implementation::student());
+    let mut judged: Vec<CheckResult> = raw
         .iter()
-        .filter_map(|outputs| {
-            let (cases, visibility) = input.value_cases(&outputs.check)?;
-            Some(values::judge(cases, outputs, visibility))
+        .filter_map(|raw| match raw {
+            Raw::Values(outputs) => {
+                let (cases, visibility) = input.value_cases(&outputs.check)?;
+                Some(values::judge(cases, outputs, visibility))
+            }
+            Raw::Samples(samples) => {
+                let case = sampling.get(samples.index)?;
+                Some(sampling_check(&case.call, &case.target, samples, alpha()))
+            }
         })
         .collect();
     judged.extend(checks);
@@ -163,13 +224,34 @@ pub fn run_task<T: Tasks>(
     task: TaskId,
     input: &WorkerInput,
     progress: &mut ProgressSink<'_>,
-) -> (Vec<CheckResult>, Vec<ValueOutputs>) {
-    let mut values = Vec::new();
+) -> (Vec<CheckResult>, Vec<Raw>) {
+    let mut raw = Vec::new();
     for calls in &input.values {
         progress(Progress::Starting(&calls.check));
-        let outputs = values::evaluate(&calls.check, &calls.calls, t);
-        progress(Progress::Evaluated(&outputs));
-        values.push(outputs);
+        let outputs = Raw::Values(values::evaluate(&calls.check, &calls.calls, t));
+        progress(Progress::Raw(&outputs));
+        raw.push(outputs);
+    }
+    for (index, setup) in input.sampling.iter().enumerate() {
+        progress(Progress::Starting(&format!("sampling: {}", setup.call)));
+        let start = Instant::now();
+        let mut sampler = Sampler::new(input.seed, 100 + index as u64);
+        let outcome = panics::catch(|| {
+            sampling::draw(
+                setup.bins,
+                setup.may_reject,
+                SAMPLING_SAMPLES,
+                &mut sampler,
+                |u| setup.call.sample(t, u),
+            )
+        });
+        let samples = Raw::Samples(SampleOutputs {
+            index,
+            outcome,
+            seconds: start.elapsed().as_secs_f64(),
+        });
+        progress(Progress::Raw(&samples));
+        raw.push(samples);
     }
     let mut checks = Vec::new();
     let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
@@ -179,14 +261,7 @@ pub fn run_task<T: Tasks>(
         checks.push(result);
     };
     let estimators = catalogue::estimators(task, t);
-    let statistical = input.sampling.len() + estimators.len();
-    let alpha = sidak(TASK_ALPHA, statistical);
-    for (i, case) in input.sampling.iter().enumerate() {
-        let seed = (input.seed, 100 + i as u64);
-        record(&format!("sampling: {}", case.call), &mut |_| {
-            sampling_check(t, &case.call, &case.target, alpha, seed)
-        });
-    }
+    let alpha = statistical_alpha(task, input.sampling.len(), t);
     #[cfg(feature = "solutions")]
     let mut reference: Vec<Option<EstimatorSpec<'_>>> =
         catalogue::estimators(task, crate::implementation::reference())
@@ -220,7 +295,7 @@ pub fn run_task<T: Tasks>(
             })
         });
     }
-    (checks, values)
+    (checks, raw)
 }
 
 /// Gives each kind its weight, split between the kind's checks.
@@ -239,22 +314,20 @@ fn spread_weights(checks: &mut [CheckResult]) {
     }
 }
 
-fn sampling_check<T: Tasks>(
-    t: &T,
+/// The sampling check of a worker's `samples` against `target`.
+fn sampling_check(
     call: &SampleCall,
     target: &SamplingTarget,
+    samples: &SampleOutputs,
     alpha: f64,
-    seed: (u64, u64),
 ) -> CheckResult {
-    let start = Instant::now();
     let mut result = CheckResult::new(format!("sampling: {call}"), CheckKind::Sampling);
     result.total = 1;
     result.alpha = alpha;
-    let mut sampler = Sampler::new(seed.0, seed.1);
-    let outcome = panics::catch(|| {
-        sampling::test_sampler(target, SAMPLING_SAMPLES, alpha, &mut sampler, |u| {
-            call.sample(t, u)
-        })
+    let outcome = samples.outcome.clone().map(|drawn| {
+        drawn
+            .map_err(SamplingFailure::Domain)
+            .and_then(|counts| sampling::compare(target, &counts, SAMPLING_SAMPLES, alpha))
     });
     match outcome {
         Ok(Ok(histogram)) => {
@@ -284,7 +357,7 @@ fn sampling_check<T: Tasks>(
         }
     }
     result.finish();
-    result.seconds = start.elapsed().as_secs_f64();
+    result.seconds = samples.seconds;
     result
 }
 

@@ -5,12 +5,12 @@
 //! replaced, not fatal), each cut at [`LINE_LIMIT`], and only lines with the job's nonce
 //! are read as records.
 
+use super::checks::Raw;
 use super::sandbox::{Policy, Protections};
-use super::values::ValueOutputs;
 use super::verdict::CheckResult;
 use super::worker::{
-    CHECK_MARKER, Delivery, Job, JobKind, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
-    VALUES_MARKER,
+    CHECK_MARKER, Delivery, Job, JobKind, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER,
+    STEP_MARKER,
 };
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
@@ -95,8 +95,8 @@ pub struct WorkerRun {
     pub step: Option<String>,
     /// The checks that finished, kept for a worker that dies later.
     pub finished: Vec<CheckResult>,
-    /// The outputs of the values checks that finished, likewise.
-    pub finished_values: Vec<ValueOutputs>,
+    /// The raw outputs that were ready, likewise.
+    pub finished_raw: Vec<Raw>,
     /// The protections the worker reported in force before any student code ran.
     pub protections: Option<Protections>,
 }
@@ -110,7 +110,7 @@ impl WorkerRun {
             seconds: 0.0,
             step: None,
             finished: Vec::new(),
-            finished_values: Vec::new(),
+            finished_raw: Vec::new(),
             protections: None,
         }
     }
@@ -277,9 +277,9 @@ fn run_in(
                 } else if let Some(json) = marked(&line, CHECK_MARKER, &nonce) {
                     seen.finished
                         .extend(serde_json::from_str::<CheckResult>(json.trim()));
-                } else if let Some(json) = marked(&line, VALUES_MARKER, &nonce) {
-                    seen.finished_values
-                        .extend(serde_json::from_str::<ValueOutputs>(json.trim()));
+                } else if let Some(json) = marked(&line, RAW_MARKER, &nonce) {
+                    seen.finished_raw
+                        .extend(serde_json::from_str::<Raw>(json.trim()));
                 } else if seen.printed.len() < OUTPUT_LIMIT && !line.is_empty() {
                     seen.printed.push_str(&line);
                     seen.printed.push('\n');
@@ -312,7 +312,7 @@ fn run_in(
         printed,
         step,
         finished,
-        finished_values,
+        finished_raw,
         protections,
     } = stdout
         .and_then(|rx| rx.recv_timeout(left()).ok())
@@ -354,7 +354,7 @@ fn run_in(
         seconds,
         step,
         finished,
-        finished_values,
+        finished_raw,
         protections,
     }
 }
@@ -367,7 +367,7 @@ struct Seen {
     printed: String,
     step: Option<String>,
     finished: Vec<CheckResult>,
-    finished_values: Vec<ValueOutputs>,
+    finished_raw: Vec<Raw>,
     protections: Option<Protections>,
 }
 

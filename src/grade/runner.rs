@@ -413,13 +413,13 @@ fn has_code_checks(task: TaskId) -> bool {
 pub const HIDDEN_OUTPUT: &str =
     "(the code's output is not shown: hidden cases were graded in the same run)\n";
 
-/// A task's outcome from its worker run: the worker's value outputs judged against
-/// `input`'s expected ones, and the worker's other checks.
+/// A task's outcome from its worker run: the worker's raw outputs judged against `input`'s
+/// expected data, and the worker's other checks.
 pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> TaskOutcome {
     let max_points = task.info().points as f64;
     let (status, points, checks) = match run.outcome {
-        Ok(Record::Checks { checks, values }) => {
-            let checks = judge_task(input, checks, &values);
+        Ok(Record::Checks { checks, raw }) => {
+            let checks = judge_task(task, input, checks, &raw);
             let (status, points) = score(task, &checks);
             (status, points, checks)
         }
@@ -438,7 +438,7 @@ pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> Ta
                 Some(step) => format!("{reason}, while running {step}"),
                 None => reason,
             };
-            let finished = judge_task(input, run.finished, &run.finished_values);
+            let finished = judge_task(task, input, run.finished, &run.finished_raw);
             (TaskStatus::Crashed { reason }, 0.0, finished)
         }
     };

@@ -140,28 +140,41 @@ const UNIT_TOLERANCE: f32 = 1e-3;
 /// Largest accepted depth below the surface (rounding of a grazing sample).
 const HORIZON_TOLERANCE: f32 = 1e-5;
 
-/// Draws `n` samples from `sample` (fed with uniform points from `sampler`), checks each,
-/// and compares their histogram with `target` at significance `alpha`.
-pub fn test_sampler(
-    target: &SamplingTarget,
+/// A sampler's directions binned by a worker: no reference density involved.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct SampleCounts {
+    /// Samples per cell.
+    pub observed: Vec<u64>,
+    /// Samples the sampler rejected (`None`).
+    pub rejected: u64,
+}
+
+/// Draws `n` samples from `sample` (fed with uniform points from `sampler`), checks each is
+/// a finite unit vector above the surface (and, when the sampler `may_reject` not, that it
+/// returned one), and bins them in `bins`: the worker's half of the check. The error names
+/// the first bad sample.
+pub fn draw(
+    bins: HemisphereBins,
+    may_reject: bool,
     n: usize,
-    alpha: f64,
     sampler: &mut Sampler,
     mut sample: impl FnMut(Vec2) -> Option<Vec3>,
-) -> Result<Histogram, SamplingFailure> {
-    let mut observed = vec![0u64; target.bins.len()];
-    let mut rejected = 0u64;
+) -> Result<SampleCounts, String> {
+    let mut counts = SampleCounts {
+        observed: vec![0u64; bins.len()],
+        rejected: 0,
+    };
     for _ in 0..n {
         let u = sampler.next_2d();
         let Some(w) = sample(u) else {
-            if target.rejected == 0.0 {
-                return Err(SamplingFailure::Domain(format!(
+            if !may_reject {
+                return Err(format!(
                     "u=({}, {}): returned no direction, but this sampler never rejects",
                     fmt_num(u.x as f64),
                     fmt_num(u.y as f64)
-                )));
+                ));
             }
-            rejected += 1;
+            counts.rejected += 1;
             continue;
         };
         let problem = if !w.is_finite() {
@@ -174,34 +187,56 @@ pub fn test_sampler(
             None
         };
         if let Some(problem) = problem {
-            return Err(SamplingFailure::Domain(format!(
+            return Err(format!(
                 "u=({}, {}): sample {} {problem}",
                 fmt_num(u.x as f64),
                 fmt_num(u.y as f64),
                 fmt_vec(w)
-            )));
+            ));
         }
-        observed[target.bins.index(w)] += 1;
+        counts.observed[bins.index(w)] += 1;
     }
+    Ok(counts)
+}
+
+/// Compares a worker's `counts` of `n` samples with `target` at significance `alpha`: the
+/// grader's half of the check. Counts of the wrong shape (a worker that sent something else)
+/// are a distribution failure with an infinite χ².
+pub fn compare(
+    target: &SamplingTarget,
+    counts: &SampleCounts,
+    n: usize,
+    alpha: f64,
+) -> Result<Histogram, SamplingFailure> {
     let scale = n as f64;
     let expected: Vec<f64> = target.probabilities.iter().map(|p| p * scale).collect();
-    let mut all_obs = observed.clone();
+    let consistent = counts.observed.len() == expected.len()
+        && counts.observed.iter().sum::<u64>() + counts.rejected == n as u64;
+    let mut all_obs = counts.observed.clone();
     let mut all_exp = expected.clone();
     if target.rejected > 0.0 {
-        all_obs.push(rejected);
+        all_obs.push(counts.rejected);
         all_exp.push(target.rejected * scale);
     }
-    let fit = chi_square(&all_obs, &all_exp).unwrap_or(ChiSquare {
-        statistic: 0.0,
-        dof: 0,
-        p_value: 1.0,
-    });
+    let fit = match chi_square(&all_obs, &all_exp) {
+        Some(fit) if consistent => fit,
+        None if consistent => ChiSquare {
+            statistic: 0.0,
+            dof: 0,
+            p_value: 1.0,
+        },
+        _ => ChiSquare {
+            statistic: f64::INFINITY,
+            dof: 0,
+            p_value: 0.0,
+        },
+    };
     let histogram = Histogram {
         name: target.name.clone(),
         bins: target.bins,
-        observed,
+        observed: counts.observed.clone(),
         expected,
-        rejected: (rejected, target.rejected * scale),
+        rejected: (counts.rejected, target.rejected * scale),
         chi2: fit.statistic,
         dof: fit.dof,
         p_value: fit.p_value,
@@ -211,6 +246,19 @@ pub fn test_sampler(
     } else {
         Ok(histogram)
     }
+}
+
+/// Draws, checks and compares in one process: [`draw`] then [`compare`].
+pub fn test_sampler(
+    target: &SamplingTarget,
+    n: usize,
+    alpha: f64,
+    sampler: &mut Sampler,
+    sample: impl FnMut(Vec2) -> Option<Vec3>,
+) -> Result<Histogram, SamplingFailure> {
+    let counts = draw(target.bins, target.rejected > 0.0, n, sampler, sample)
+        .map_err(SamplingFailure::Domain)?;
+    compare(target, &counts, n, alpha)
 }
 
 impl Histogram {

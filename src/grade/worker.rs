@@ -8,9 +8,8 @@
 //! grader accepts only a line with its nonce, and treats a worker that exits without one as
 //! having crashed.
 
-use super::checks::{Progress, ProgressSink, WorkerInput, run_task};
+use super::checks::{Progress, ProgressSink, Raw, WorkerInput, run_task};
 use super::sandbox::{self, Policy};
-use super::values::ValueOutputs;
 use super::verdict::CheckResult;
 use crate::panics;
 use crate::stability::runner::CaseResult;
@@ -31,9 +30,10 @@ pub const STEP_MARKER: &str = "PBRLAB-STEP";
 /// the check as JSON: when the worker dies later, the checks that finished are kept.
 pub const CHECK_MARKER: &str = "PBRLAB-CHECK";
 
-/// The marker of the line a worker prints when the calls of a values check have returned,
-/// followed by the nonce and their [`ValueOutputs`] as JSON (the grader judges them).
-pub const VALUES_MARKER: &str = "PBRLAB-VALUES";
+/// The marker of the line a worker prints when raw outputs are ready (a values check's
+/// outputs, a sampling check's counts), followed by the nonce and the [`Raw`] as JSON: the
+/// grader judges them, and keeps them when the worker dies later.
+pub const RAW_MARKER: &str = "PBRLAB-RAW";
 
 /// The marker of the line a worker prints once it has its job and has entered its sandbox,
 /// before any student code runs, followed by the nonce and the [`sandbox::Protections`] in
@@ -78,7 +78,7 @@ pub enum JobKind {
     Grade {
         /// The task id.
         task: String,
-        /// Its calls, sampler setups and seed: no expected value.
+        /// Its calls, samplers and seed: no expected value, no reference density.
         input: WorkerInput,
     },
     /// Only tell whether the student has written the task.
@@ -133,9 +133,9 @@ pub enum Record {
     Checks {
         /// Every check that ran in the worker.
         checks: Vec<CheckResult>,
-        /// The outputs of the values checks, for the grader to judge.
+        /// The raw outputs of the checks the grader judges.
         #[serde(default)]
-        values: Vec<ValueOutputs>,
+        raw: Vec<Raw>,
     },
     /// The answer to a probe.
     Attempted {
@@ -159,8 +159,8 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
     let task_of = |name: &str| TaskId::parse(name).map_err(|e| anyhow!(e));
     let result = match kind {
         JobKind::Grade { task, input } => task_of(task).map(|task| {
-            let (checks, values) = run_task(t, task, input, progress);
-            Record::Checks { checks, values }
+            let (checks, raw) = run_task(t, task, input, progress);
+            Record::Checks { checks, raw }
         }),
         JobKind::Render {
             scene,
@@ -173,7 +173,7 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
                 *seed,
                 report_dir.as_deref(),
             )],
-            values: Vec::new(),
+            raw: Vec::new(),
         }),
         JobKind::Stability { case } => crate::stability::cases::<T>()
             .iter()
@@ -231,8 +231,8 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
                 Ok(json) => format!("{CHECK_MARKER} {nonce} {json}"),
                 Err(_) => return,
             },
-            Progress::Evaluated(outputs) => match serde_json::to_string(outputs) {
-                Ok(json) => format!("{VALUES_MARKER} {nonce} {json}"),
+            Progress::Raw(raw) => match serde_json::to_string(raw) {
+                Ok(json) => format!("{RAW_MARKER} {nonce} {json}"),
                 Err(_) => return,
             },
         };
