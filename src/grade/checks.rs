@@ -155,6 +155,19 @@ pub enum Raw {
     Values(ValueOutputs),
     /// The samples of a sampling check.
     Samples(SampleOutputs),
+    /// The estimates of an estimator check.
+    Estimate(EstimateOutputs),
+}
+
+/// What one estimator check measured in a worker, or why it could not.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EstimateOutputs {
+    /// Which of the task's estimators, in order.
+    pub index: usize,
+    /// The measured runs, a refused or non-finite estimate, or the panic that stopped it.
+    pub outcome: Result<Result<estimator::Measured, String>, Panic>,
+    /// Seconds the estimates took.
+    pub seconds: f64,
 }
 
 /// What grading a task reports as it goes, so that a worker that dies part-way through can
@@ -165,7 +178,7 @@ pub enum Progress<'a> {
     Starting(&'a str),
     /// A check has finished.
     Finished(&'a CheckResult),
-    /// Raw outputs (a values check's, a sampling check's) are ready for the grader.
+    /// Raw outputs (a values, sampling or estimator check's) are ready for the grader.
     Raw(&'a Raw),
 }
 
@@ -185,7 +198,8 @@ fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
 }
 
 /// The grader's half: judges a worker's raw outputs against `input` (value outputs against
-/// the expected outputs, sample counts against the reference density) and puts those checks
+/// the expected outputs, sample counts against the reference density, estimates against
+/// the analytic values by the t-test) and puts those checks
 /// first, then the worker's other checks, with the kinds' weights.
 pub fn judge_task(
     task: TaskId,
@@ -198,6 +212,7 @@ pub fn judge_task(
         .as_ref()
         .map_or(&[][..], |d| d.sampling.as_slice());
     let alpha = || statistical_alpha(task, sampling.len(), crate::implementation::student());
+    let estimators = std::cell::OnceCell::new();
     let mut judged: Vec<CheckResult> = raw
         .iter()
         .filter_map(|raw| match raw {
@@ -208,6 +223,12 @@ pub fn judge_task(
             Raw::Samples(samples) => {
                 let case = sampling.get(samples.index)?;
                 Some(sampling_check(&case.call, &case.target, samples, alpha()))
+            }
+            Raw::Estimate(estimate) => {
+                let specs = estimators
+                    .get_or_init(|| catalogue::estimators(task, crate::implementation::student()));
+                let spec = specs.get(estimate.index)?;
+                Some(estimator_check(spec, estimate, alpha()))
             }
         })
         .collect();
@@ -253,15 +274,7 @@ pub fn run_task<T: Tasks>(
         progress(Progress::Raw(&samples));
         raw.push(samples);
     }
-    let mut checks = Vec::new();
-    let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
-        progress(Progress::Starting(name));
-        let result = check(progress);
-        progress(Progress::Finished(&result));
-        checks.push(result);
-    };
     let estimators = catalogue::estimators(task, t);
-    let alpha = statistical_alpha(task, input.sampling.len(), t);
     #[cfg(feature = "solutions")]
     let mut reference: Vec<Option<EstimatorSpec<'_>>> =
         catalogue::estimators(task, crate::implementation::reference())
@@ -271,14 +284,34 @@ pub fn run_task<T: Tasks>(
     #[cfg(not(feature = "solutions"))]
     let mut reference: Vec<Option<EstimatorSpec<'_>>> = Vec::new();
     reference.resize_with(estimators.len(), || None);
-    for (i, (spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
-        let name = format!("estimator: {}", spec.name);
-        let mut pair = Some((spec, reference));
-        record(&name, &mut |_| {
-            let (spec, reference) = pair.take().expect("each estimator runs once");
-            estimator_check(spec, reference, alpha, (input.seed, 200 + i as u64))
+    for (index, (mut spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
+        progress(Progress::Starting(&format!("estimator: {}", spec.name)));
+        let start = Instant::now();
+        let mut reference = reference.map(|r| r.estimate);
+        let outcome = panics::catch(|| {
+            estimator::measure(
+                spec.analytic,
+                spec.samples,
+                (input.seed, 200 + index as u64),
+                spec.estimate.as_mut(),
+                reference.as_deref_mut(),
+            )
         });
+        let estimate = Raw::Estimate(EstimateOutputs {
+            index,
+            outcome,
+            seconds: start.elapsed().as_secs_f64(),
+        });
+        progress(Progress::Raw(&estimate));
+        raw.push(estimate);
     }
+    let mut checks = Vec::new();
+    let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
+        progress(Progress::Starting(name));
+        let result = check(progress);
+        progress(Progress::Finished(&result));
+        checks.push(result);
+    };
     for (i, (a, b)) in catalogue::unit_pairs(task, t).into_iter().enumerate() {
         let name = format!("estimator: variance independent of units ({})", b.name);
         let mut pair = Some((a, b));
@@ -361,28 +394,20 @@ fn sampling_check(
     result
 }
 
+/// The estimator check of a worker's `estimate` of `spec` (its name, analytic value and
+/// sample count are the grader's).
 fn estimator_check(
-    mut spec: EstimatorSpec<'_>,
-    reference: Option<EstimatorSpec<'_>>,
+    spec: &EstimatorSpec<'_>,
+    estimate: &EstimateOutputs,
     alpha: f64,
-    seed: (u64, u64),
 ) -> CheckResult {
-    let start = Instant::now();
     let mut result = CheckResult::new(format!("estimator: {}", spec.name), CheckKind::Estimator);
     result.total = 1;
     result.alpha = alpha;
-    let mut reference = reference.map(|r| r.estimate);
-    let outcome = panics::catch(|| {
-        estimator::test_estimator(
-            &spec.name,
-            spec.analytic,
-            spec.samples,
-            alpha,
-            seed,
-            spec.estimate.as_mut(),
-            reference.as_deref_mut(),
-        )
-    });
+    let outcome = estimate
+        .outcome
+        .clone()
+        .map(|measured| estimator::judge(&spec.name, spec.analytic, spec.samples, alpha, measured));
     match outcome {
         Ok(Ok(stats)) => {
             result.summary = stats.describe();
@@ -403,7 +428,7 @@ fn estimator_check(
         }
     }
     result.finish();
-    result.seconds = start.elapsed().as_secs_f64();
+    result.seconds = estimate.seconds;
     result
 }
 

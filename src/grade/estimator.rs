@@ -93,36 +93,58 @@ pub struct EstimatorFailure {
 /// the code under test gave none (an output outside its domain, in words).
 pub type Estimator<'a> = dyn FnMut(&mut Sampler) -> Result<f64, String> + 'a;
 
-/// Runs `estimator` `n` times and tests its mean against `analytic` at significance `alpha`.
-/// `Err` carries a message naming the failure: a non-finite estimate (with its index) or a
-/// mean the t-test rejects.
-pub fn test_estimator(
+/// What a worker measured of an estimator: the student's run with its moments, and the
+/// reference's run at the same sample count when the worker has the reference.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Measured {
+    /// The student's run.
+    pub student: EstimatorRun,
+    /// Its moments, for the t-test.
+    pub moments: Moments,
+    /// The reference's run.
+    pub reference: Option<EstimatorRun>,
+}
+
+/// Runs `estimator` (and `reference`) `n` times: the worker's half. `Err` names the first
+/// estimate that was refused or not finite.
+pub fn measure(
+    analytic: f64,
+    n: usize,
+    seed: (u64, u64),
+    estimator: &mut Estimator<'_>,
+    reference: Option<&mut Estimator<'_>>,
+) -> Result<Measured, String> {
+    let (student, moments) = run(analytic, n, seed, estimator)?;
+    let reference = reference.and_then(|r| run(analytic, n, seed, r).ok().map(|(run, _)| run));
+    Ok(Measured {
+        student,
+        moments,
+        reference,
+    })
+}
+
+/// Tests a measured mean against `analytic` at significance `alpha`: the grader's half.
+pub fn judge(
     name: &str,
     analytic: f64,
     n: usize,
     alpha: f64,
-    seed: (u64, u64),
-    estimator: &mut Estimator<'_>,
-    reference: Option<&mut Estimator<'_>>,
+    measured: Result<Measured, String>,
 ) -> Result<EstimatorStats, Box<EstimatorFailure>> {
-    let student = match run(analytic, n, seed, estimator) {
-        Ok(run) => run,
-        Err(message) => {
-            return Err(Box::new(EstimatorFailure {
-                message: format!("{name}: {message}"),
-                stats: None,
-            }));
-        }
-    };
-    let reference = reference.and_then(|r| run(analytic, n, seed, r).ok().map(|(run, _)| run));
-    let (student, moments) = student;
+    let measured = measured.map_err(|message| {
+        Box::new(EstimatorFailure {
+            message: format!("{name}: {message}"),
+            stats: None,
+        })
+    })?;
+    let student = measured.student;
     let stats = EstimatorStats {
         name: name.into(),
         analytic,
         samples: n,
         student,
-        reference,
-        p_value: t_test(&moments, analytic),
+        reference: measured.reference,
+        p_value: t_test(&measured.moments, analytic),
     };
     if stats.p_value < alpha {
         let off = if student.std_error > 0.0 {
@@ -145,6 +167,21 @@ pub fn test_estimator(
     } else {
         Ok(stats)
     }
+}
+
+/// Runs `estimator` `n` times and tests its mean against `analytic` at significance `alpha`
+/// in one process: [`measure`] then [`judge`].
+pub fn test_estimator(
+    name: &str,
+    analytic: f64,
+    n: usize,
+    alpha: f64,
+    seed: (u64, u64),
+    estimator: &mut Estimator<'_>,
+    reference: Option<&mut Estimator<'_>>,
+) -> Result<EstimatorStats, Box<EstimatorFailure>> {
+    let measured = measure(analytic, n, seed, estimator, reference);
+    judge(name, analytic, n, alpha, measured)
 }
 
 /// Variance of an estimator run: `std_error² · n`.

@@ -70,7 +70,7 @@ pub fn chi_square(observed: &[u64], expected: &[f64]) -> Option<ChiSquare> {
 }
 
 /// Mean, sample variance and count of a stream of values (Welford's update).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Moments {
     /// Number of values.
     pub n: u64,
