@@ -254,56 +254,59 @@ pub fn run_task<T: Tasks>(
         raw.push(outputs);
     }
     for (index, setup) in input.sampling.iter().enumerate() {
-        progress(Progress::Starting(&format!("sampling: {}", setup.call)));
-        let start = Instant::now();
-        let mut sampler = Sampler::new(input.seed, 100 + index as u64);
-        let outcome = panics::catch(|| {
-            sampling::draw(
-                setup.bins,
-                setup.may_reject,
-                SAMPLING_SAMPLES,
-                &mut sampler,
-                |u| setup.call.sample(t, u),
-            )
-        });
-        let samples = Raw::Samples(SampleOutputs {
-            index,
-            outcome,
-            seconds: start.elapsed().as_secs_f64(),
-        });
-        progress(Progress::Raw(&samples));
-        raw.push(samples);
+        let name = format!("sampling: {}", setup.call);
+        raw.push(measure_raw(&name, progress, || {
+            let mut sampler = Sampler::new(input.seed, 100 + index as u64);
+            let outcome = panics::catch(|| {
+                sampling::draw(
+                    setup.bins,
+                    setup.may_reject,
+                    SAMPLING_SAMPLES,
+                    &mut sampler,
+                    |u| setup.call.sample(t, u),
+                )
+            });
+            |seconds| {
+                Raw::Samples(SampleOutputs {
+                    index,
+                    outcome,
+                    seconds,
+                })
+            }
+        }));
     }
+    // The reference's estimators run beside the student's, for the time comparison.
+    let mut reference: Vec<Option<EstimatorSpec<'_>>> = crate::implementation::try_reference()
+        .map(|r| {
+            catalogue::estimators(task, r)
+                .into_iter()
+                .map(Some)
+                .collect()
+        })
+        .unwrap_or_default();
     let estimators = catalogue::estimators(task, t);
-    #[cfg(feature = "solutions")]
-    let mut reference: Vec<Option<EstimatorSpec<'_>>> =
-        catalogue::estimators(task, crate::implementation::reference())
-            .into_iter()
-            .map(Some)
-            .collect();
-    #[cfg(not(feature = "solutions"))]
-    let mut reference: Vec<Option<EstimatorSpec<'_>>> = Vec::new();
     reference.resize_with(estimators.len(), || None);
     for (index, (mut spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
-        progress(Progress::Starting(&format!("estimator: {}", spec.name)));
-        let start = Instant::now();
-        let mut reference = reference.map(|r| r.estimate);
-        let outcome = panics::catch(|| {
-            estimator::measure(
-                spec.analytic,
-                spec.samples,
-                (input.seed, 200 + index as u64),
-                spec.estimate.as_mut(),
-                reference.as_deref_mut(),
-            )
-        });
-        let estimate = Raw::Estimate(EstimateOutputs {
-            index,
-            outcome,
-            seconds: start.elapsed().as_secs_f64(),
-        });
-        progress(Progress::Raw(&estimate));
-        raw.push(estimate);
+        let name = format!("estimator: {}", spec.name);
+        raw.push(measure_raw(&name, progress, || {
+            let mut reference = reference.map(|r| r.estimate);
+            let outcome = panics::catch(|| {
+                estimator::measure(
+                    spec.analytic,
+                    spec.samples,
+                    (input.seed, 200 + index as u64),
+                    spec.estimate.as_mut(),
+                    reference.as_deref_mut(),
+                )
+            });
+            |seconds| {
+                Raw::Estimate(EstimateOutputs {
+                    index,
+                    outcome,
+                    seconds,
+                })
+            }
+        }));
     }
     let mut checks = Vec::new();
     let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
@@ -329,6 +332,21 @@ pub fn run_task<T: Tasks>(
         });
     }
     (checks, raw)
+}
+
+/// Runs `measure` as the step `name`, times it, and reports the raw output it makes (from
+/// the seconds taken) to `progress`.
+fn measure_raw<F: FnOnce(f64) -> Raw>(
+    name: &str,
+    progress: &mut ProgressSink<'_>,
+    measure: impl FnOnce() -> F,
+) -> Raw {
+    progress(Progress::Starting(name));
+    let start = Instant::now();
+    let make = measure();
+    let raw = make(start.elapsed().as_secs_f64());
+    progress(Progress::Raw(&raw));
+    raw
 }
 
 /// Gives each kind its weight, split between the kind's checks.
