@@ -78,7 +78,7 @@ pub enum ImplChoice {
 }
 
 /// The message of the panic that `todo!()` raises.
-const TODO_MESSAGE: &str = "not yet implemented";
+pub const TODO_MESSAGE: &str = "not yet implemented";
 
 /// True when a panic payload is the one `todo!()` or `unimplemented!()` raises.
 pub fn is_todo_panic(payload: &(dyn std::any::Any + Send)) -> bool {

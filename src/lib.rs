@@ -44,6 +44,16 @@
 //! [`grade::sandbox`] first: the grader's workers (probes included) and `render`/`converge`
 //! of student code.
 //!
+//! The workers are a binary of their own, `pbrlab-worker` (`src/worker_main.rs`): it links
+//! the task tables and the renderer but never calls the grader's judging code, so the linker
+//! drops the embedded expected data and reference renders from it (a test searches the file
+//! for every stored file's bytes). A worker gets inputs (calls, sampler setups, seeds, a
+//! scene name) and sends back raw outputs only ([`grade::checks::Raw`]: values, binned
+//! samples, estimates, variances, stability values, a render's mean and variance); the
+//! grader, which never runs student code, keeps the list of checks and every expected value
+//! and judges them, so an output left out fails its check and nothing a worker prints can
+//! pass one.
+//!
 //! [`Tasks`]: worksheet::Tasks
 //! [`task_table!`]: crate::task_table
 

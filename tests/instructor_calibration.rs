@@ -19,8 +19,8 @@ fn the_reference_fails_no_more_often_than_declared() {
         reference: Some(pbrlab_solutions::TASKS),
     });
     let launcher = Launcher {
-        program: env!("CARGO_BIN_EXE_pbrlab").into(),
-        args: vec!["grade-worker".into()],
+        program: env!("CARGO_BIN_EXE_pbrlab-worker").into(),
+        args: Vec::new(),
         env: Vec::new(),
     };
     let options = GradeOptions {

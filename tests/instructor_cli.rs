@@ -100,6 +100,18 @@ fn the_reference_scores_full_marks_in_every_format() {
         page.contains("<svg") && page.contains("cosine_sample"),
         "no histograms"
     );
+    // The grader draws the renders' pictures from the workers' raw images.
+    for scene in ["cornell", "smoke"] {
+        for picture in ["student", "reference", "difference"] {
+            let file = std::fs::read_dir(&html)
+                .unwrap()
+                .flatten()
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .find(|f| f.contains(scene) && f.ends_with(&format!("-{picture}.png")));
+            let file = file.unwrap_or_else(|| panic!("no {picture} picture of {scene}"));
+            assert!(page.contains(&file), "{file} not on the page");
+        }
+    }
     // A reference grade is not a student's progress.
     assert!(!state.path().join("last-grade.json").exists());
 }

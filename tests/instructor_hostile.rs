@@ -138,6 +138,19 @@ fn garble_output() {
     let _ = out.flush();
 }
 
+/// A cheater that somehow knows the job's nonce (the student's code cannot read it) and
+/// sends a result of its own: no outputs at all, so that no check could fail. The grader's
+/// list of checks is its own, so every check fails for want of an output.
+fn forge_with_the_nonce() -> ! {
+    use pbrlab::grade::worker::{Delivery, RESULT_MARKER, Record};
+    let delivery: Delivery =
+        serde_json::from_reader(std::io::stdin()).expect("the job arrives on stdin");
+    let nonce = delivery.job.nonce;
+    let empty = serde_json::to_string(&Record::Outputs { raw: Vec::new() }).expect("json");
+    println!("\nPBRLAB-STARTED {nonce} {{}}\n{RESULT_MARKER} {nonce} {empty}");
+    std::process::exit(0)
+}
+
 /// The worker: runs only when started by the tests below. Each attack runs once, at the
 /// first call of `smith_g1`; the function itself is the reference's.
 #[test]
@@ -146,6 +159,9 @@ fn worker_entry() {
         return;
     };
     instructor_support::install();
+    if name == "forge" {
+        forge_with_the_nonce();
+    }
     static ONCE: Once = Once::new();
     let mut patch = Patch::new(TaskId::SmithG1);
     patch.misbehave = Some(match name.as_str() {
@@ -238,4 +254,70 @@ fn invalid_utf8_and_a_huge_line_are_only_output() {
     let g1 = report.task("smith_g1").expect("graded");
     assert!(g1.output.contains("not UTF-8"), "{}", g1.output);
     assert!(g1.output.len() <= 64 * 1024, "{}", g1.output.len());
+}
+
+#[test]
+fn a_result_without_outputs_fails_every_check_even_with_the_nonce() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let report = grade_under("forge", &dir.path().join("unused"));
+    assert_eq!(report.tasks.len(), 3);
+    for t in &report.tasks {
+        assert_eq!(t.status, TaskStatus::Failed, "{} {:?}", t.task, t.status);
+        assert_eq!(t.points, 0.0, "{}", t.task);
+        assert!(!t.checks.is_empty(), "{}", t.task);
+        for c in &t.checks {
+            assert!(!c.passed, "{}: {} passed", t.task, c.name);
+            assert!(
+                c.failures
+                    .iter()
+                    .any(|f| f.contains("no output came back") || f.contains("no value came back")),
+                "{}: {:?}",
+                t.task,
+                c.failures
+            );
+        }
+    }
+}
+
+/// Pieces of every stored expected-data file and reference render: the middle 64 bytes.
+fn stored_answers() -> Vec<(String, Vec<u8>)> {
+    let root = pbrlab::repository_root().join("tests/snapshots");
+    ["expected", "renders"]
+        .iter()
+        .flat_map(|dir| {
+            std::fs::read_dir(root.join(dir))
+                .expect("stored data")
+                .flatten()
+        })
+        .map(|entry| {
+            let bytes = std::fs::read(entry.path()).expect("readable");
+            let middle = bytes.len() / 2;
+            let piece = bytes[middle..(middle + 64).min(bytes.len())].to_vec();
+            (entry.file_name().to_string_lossy().into_owned(), piece)
+        })
+        .collect()
+}
+
+fn contains(haystack: &[u8], needle: &[u8]) -> bool {
+    haystack.windows(needle.len()).any(|w| w == needle)
+}
+
+#[test]
+fn the_worker_binary_holds_no_expected_data_or_reference_render() {
+    let answers = stored_answers();
+    assert!(answers.len() >= 10, "{} stored files", answers.len());
+    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
+    let worker = std::fs::read(env!("CARGO_BIN_EXE_pbrlab-worker")).expect("the worker's binary");
+    for (file, piece) in &answers {
+        // The grader embeds them (so this search finds what it looks for) ...
+        assert!(
+            contains(&grader, piece),
+            "{file} is not in the grader's binary"
+        );
+        // ... the process that runs student code does not.
+        assert!(
+            !contains(&worker, piece),
+            "{file} is in the worker's binary"
+        );
+    }
 }

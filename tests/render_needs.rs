@@ -145,8 +145,8 @@ fn the_needs_command_prints_tasks_and_subsystems() {
 #[test]
 fn student_renders_stop_on_unwritten_tasks() {
     let launcher = pbrlab::grade::isolation::Launcher {
-        program: env!("CARGO_BIN_EXE_pbrlab").into(),
-        args: vec!["grade-worker".into()],
+        program: env!("CARGO_BIN_EXE_pbrlab-worker").into(),
+        args: Vec::new(),
         env: Vec::new(),
     };
     let dir = tempfile::tempdir().unwrap();

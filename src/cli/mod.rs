@@ -2,7 +2,6 @@
 
 mod converge;
 mod grade;
-mod grade_worker;
 mod handout;
 mod hint;
 mod needs;
@@ -32,9 +31,6 @@ pub enum Command {
     Hint(hint::Args),
     /// Grade your tasks (or the reference) and print a report.
     Grade(grade::Args),
-    /// Grade one task in an isolated process (used by `grade`; reads its job on stdin).
-    #[command(hide = true)]
-    GradeWorker(grade_worker::Args),
     /// Regrade every time you save a file in exercises/.
     Watch(watch::Args),
     /// Write the student repository (no solutions) into a directory.
@@ -70,7 +66,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Grade(args)) => grade::run(args),
-        Some(Command::GradeWorker(args)) => grade_worker::run(args),
         Some(Command::Watch(args)) => watch::run(args),
         Some(Command::Handout(args)) => handout::run(args),
         Some(Command::Render(args)) => render::run(args),

@@ -42,7 +42,8 @@ pub fn ensure_current() -> anyhow::Result<()> {
     let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
     cargo
         .current_dir(root)
-        .args(["build", "--release", "--bin", "pbrlab"]);
+        .args(["build", "--release", "--bin", "pbrlab", "--bin"])
+        .arg(crate::grade::isolation::WORKER_BINARY);
     if !cfg!(feature = "solutions") {
         cargo.arg("--no-default-features");
     }

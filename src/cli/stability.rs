@@ -39,7 +39,7 @@ pub struct Args {
 /// Runs the catalogue on the chosen implementation and prints the verdicts. Fails (exit
 /// status 1) when any attempted case does not pass.
 ///
-/// Each case runs in a worker process of its own (the grader's `grade-worker`), so a case
+/// Each case runs in a worker process of its own (the grader's `pbrlab-worker`), so a case
 /// that overflows the stack or aborts is reported as a crash and every other case still
 /// runs; the rows of a task are printed as soon as its cases are done.
 pub fn run(args: Args) -> anyhow::Result<()> {

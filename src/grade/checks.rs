@@ -7,6 +7,7 @@ use super::case::ValueCase;
 use super::catalogue::{self, EstimatorSpec};
 use super::estimator;
 use super::expected::TaskData;
+use super::image_check::ImageStats;
 use super::sampling::{self, HemisphereBins, SampleCounts, SamplingFailure, SamplingTarget};
 use super::stability;
 use super::stats::sidak;
@@ -15,6 +16,7 @@ use super::values::ValueOutputs;
 use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
 use crate::panics::{self, Panic};
 use crate::sampling::Sampler;
+use crate::stability::Value;
 use crate::worksheet::{TaskId, Tasks};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
@@ -147,7 +149,7 @@ pub struct SampleOutputs {
     pub seconds: f64,
 }
 
-/// A worker's raw output for the grader to judge.
+/// A worker's raw output for the grader to judge: measurements only, never a verdict.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "raw", rename_all = "snake_case")]
 pub enum Raw {
@@ -157,6 +159,67 @@ pub enum Raw {
     Samples(SampleOutputs),
     /// The estimates of an estimator check.
     Estimate(EstimateOutputs),
+    /// The variances of one estimator in two units of length.
+    Variances(VarianceOutputs),
+    /// What the task returned on one stability case.
+    Stability(StabilityOutput),
+    /// A render of a graded scene.
+    Image(ImageOutputs),
+}
+
+/// What one units-of-length pair measured in a worker: the variance per sample of the
+/// estimator in the original units and with lengths scaled, or why there is none.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VarianceOutputs {
+    /// Which of the task's unit pairs, in order.
+    pub index: usize,
+    /// The two variances, a refused or non-finite estimate, or the panic that stopped it.
+    pub outcome: Result<Result<Variances, String>, Panic>,
+    /// Seconds the estimates took.
+    pub seconds: f64,
+}
+
+/// The variance per sample of one estimator in two units of length.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Variances {
+    /// In the scene's own units.
+    #[serde(with = "super::lenient_f64")]
+    pub original: f64,
+    /// With every length scaled.
+    #[serde(with = "super::lenient_f64")]
+    pub scaled: f64,
+}
+
+/// What the task returned on one stability case, or the panic that stopped it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StabilityOutput {
+    /// The case's name (`smith_g1/alpha_zero`).
+    pub case: String,
+    /// The value returned, or the panic.
+    pub outcome: Result<Value, Panic>,
+    /// Seconds the call took.
+    pub seconds: f64,
+}
+
+/// A graded scene's render made in a worker: its per-pixel mean and variance, or why there
+/// is none.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImageOutputs {
+    /// The scene.
+    pub scene: String,
+    /// The render, the scene's load error, or the panic that stopped the render.
+    pub outcome: Result<Result<Rendered, String>, Panic>,
+    /// Seconds the render took.
+    pub seconds: f64,
+}
+
+/// A render's statistics and the samples the renderer had to drop.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Rendered {
+    /// Mean and variance of the mean per pixel-channel.
+    pub stats: ImageStats,
+    /// Samples that were NaN, infinite or negative and were dropped.
+    pub rejected: u64,
 }
 
 /// What one estimator check measured in a worker, or why it could not.
@@ -171,14 +234,12 @@ pub struct EstimateOutputs {
 }
 
 /// What grading a task reports as it goes, so that a worker that dies part-way through can
-/// say where, and the checks that finished before are not lost.
+/// say where, and the raw outputs ready before are not lost.
 #[derive(Debug)]
 pub enum Progress<'a> {
     /// A check (or one stability case within the stability check) is about to run.
     Starting(&'a str),
-    /// A check has finished.
-    Finished(&'a CheckResult),
-    /// Raw outputs (a values, sampling or estimator check's) are ready for the grader.
+    /// Raw outputs are ready for the grader.
     Raw(&'a Raw),
 }
 
@@ -187,8 +248,8 @@ pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
 
 /// Runs every check of `task` on `t` in this process: [`run_task`] then [`judge_task`].
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
-    let (checks, raw) = run_task(t, task, &input.for_worker(), &mut |_| {});
-    judge_task(task, input, checks, &raw)
+    let raw = run_task(t, task, &input.for_worker(), &mut |_| {});
+    judge_task(task, input, &raw)
 }
 
 /// Significance of each statistical sub-test of `task`: [`TASK_ALPHA`] Šidák-split over its
@@ -197,55 +258,127 @@ fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
     sidak(TASK_ALPHA, sampling + catalogue::estimators(task, t).len())
 }
 
-/// The grader's half: judges a worker's raw outputs against `input` (value outputs against
-/// the expected outputs, sample counts against the reference density, estimates against
-/// the analytic values by the t-test) and puts those checks
-/// first, then the worker's other checks, with the kinds' weights.
-pub fn judge_task(
-    task: TaskId,
-    input: &TaskInput,
-    checks: Vec<CheckResult>,
-    raw: &[Raw],
-) -> Vec<CheckResult> {
-    let sampling = input
-        .data
-        .as_ref()
-        .map_or(&[][..], |d| d.sampling.as_slice());
-    let alpha = || statistical_alpha(task, sampling.len(), crate::implementation::student());
-    let estimators = std::cell::OnceCell::new();
-    let mut judged: Vec<CheckResult> = raw
-        .iter()
-        .filter_map(|raw| match raw {
-            Raw::Values(outputs) => {
-                let (cases, visibility) = input.value_cases(&outputs.check)?;
-                Some(values::judge(cases, outputs, visibility))
-            }
-            Raw::Samples(samples) => {
-                let case = sampling.get(samples.index)?;
-                Some(sampling_check(&case.call, &case.target, samples, alpha()))
-            }
-            Raw::Estimate(estimate) => {
-                let specs = estimators
-                    .get_or_init(|| catalogue::estimators(task, crate::implementation::student()));
-                let spec = specs.get(estimate.index)?;
-                Some(estimator_check(spec, estimate, alpha()))
-            }
-        })
+/// The grader's half: every check `task` has, each judged from the worker's raw output for
+/// it: value outputs against the expected outputs, sample counts against the reference
+/// density, estimates against the analytic values by the t-test, variance pairs against
+/// [`UNIT_VARIANCE_RATIO`], stability values against their cases. The list of checks is the
+/// grader's own (from `input` and the catalogues), so a check whose output never came back
+/// fails instead of dropping out of the score.
+pub fn judge_task(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<CheckResult> {
+    let mut judged: Vec<CheckResult> = judge_all(task, input, raw)
+        .into_iter()
+        .map(|(check, _)| check)
         .collect();
-    judged.extend(checks);
     spread_weights(&mut judged);
     judged
 }
 
-/// The worker's half: evaluates the value calls of `input` (outputs only, judged by the
-/// grader) and runs the sampling, estimator and stability checks of `task` on `t`, telling
-/// `progress` before each check (and each stability case) runs and after each finishes.
+/// The checks of `task` whose every raw output is in `raw`, judged: what a worker that
+/// crashed part-way through had finished.
+pub fn judge_finished(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<CheckResult> {
+    let mut judged: Vec<CheckResult> = judge_all(task, input, raw)
+        .into_iter()
+        .filter_map(|(check, complete)| complete.then_some(check))
+        .collect();
+    spread_weights(&mut judged);
+    judged
+}
+
+/// Every check of `task` judged from `raw`, each with whether all of its outputs were there.
+fn judge_all(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<(CheckResult, bool)> {
+    let t = crate::implementation::student();
+    let sampling = input
+        .data
+        .as_ref()
+        .map_or(&[][..], |d| d.sampling.as_slice());
+    let alpha = statistical_alpha(task, sampling.len(), t);
+    let mut judged: Vec<(CheckResult, bool)> = Vec::new();
+    for calls in input.for_worker().values {
+        let Some((cases, visibility)) = input.value_cases(&calls.check) else {
+            continue;
+        };
+        judged.push(from_raw(
+            raw,
+            &calls.check,
+            CheckKind::Values,
+            |r| match r {
+                Raw::Values(outputs) if outputs.check == calls.check => {
+                    Some(values::judge(cases, outputs, visibility))
+                }
+                _ => None,
+            },
+        ));
+    }
+    for (index, case) in sampling.iter().enumerate() {
+        let name = format!("sampling: {}", case.call);
+        judged.push(from_raw(raw, &name, CheckKind::Sampling, |r| match r {
+            Raw::Samples(s) if s.index == index => {
+                Some(sampling_check(&case.call, &case.target, s, alpha))
+            }
+            _ => None,
+        }));
+    }
+    for (index, spec) in catalogue::estimators(task, t).iter().enumerate() {
+        let name = format!("estimator: {}", spec.name);
+        judged.push(from_raw(raw, &name, CheckKind::Estimator, |r| match r {
+            Raw::Estimate(e) if e.index == index => Some(estimator_check(spec, e, alpha)),
+            _ => None,
+        }));
+    }
+    for (index, (_, scaled)) in catalogue::unit_pairs(task, t).iter().enumerate() {
+        let name = units_name(&scaled.name);
+        judged.push(from_raw(raw, &name, CheckKind::Estimator, |r| match r {
+            Raw::Variances(v) if v.index == index => Some(units_check(&name, v)),
+            _ => None,
+        }));
+    }
+    let cases = crate::stability::cases_for::<crate::worksheet::TaskFns>(task);
+    if !cases.is_empty() {
+        judged.push(stability::judge(&cases, raw));
+    }
+    judged
+}
+
+/// The check `judge` makes of the first raw output it accepts, complete; or, when there is
+/// none, the check `name` failed as [`missing`], incomplete.
+fn from_raw(
+    raw: &[Raw],
+    name: &str,
+    kind: CheckKind,
+    judge: impl FnMut(&Raw) -> Option<CheckResult>,
+) -> (CheckResult, bool) {
+    raw.iter()
+        .find_map(judge)
+        .map_or_else(|| (missing(name, kind), false), |check| (check, true))
+}
+
+/// A check whose raw output never came back (the worker stopped first, or did not send it):
+/// failed.
+fn missing(name: &str, kind: CheckKind) -> CheckResult {
+    let mut result = CheckResult::new(name, kind);
+    result.total = 1;
+    result.fail(format!(
+        "{name}: no output came back from the worker (it stopped before this check)"
+    ));
+    result.finish();
+    result
+}
+
+/// The name of the units-of-length check of the estimator `scaled`.
+fn units_name(scaled: &str) -> String {
+    format!("estimator: variance independent of units ({scaled})")
+}
+
+/// The worker's half: evaluates the value calls of `input` and runs the samplers,
+/// estimators, unit pairs and stability cases of `task` on `t`, returning their raw
+/// outputs only (the grader judges them), and telling `progress` before each step runs and
+/// when its output is ready.
 pub fn run_task<T: Tasks>(
     t: &T,
     task: TaskId,
     input: &WorkerInput,
     progress: &mut ProgressSink<'_>,
-) -> (Vec<CheckResult>, Vec<Raw>) {
+) -> Vec<Raw> {
     let mut raw = Vec::new();
     for calls in &input.values {
         progress(Progress::Starting(&calls.check));
@@ -308,30 +441,46 @@ pub fn run_task<T: Tasks>(
             }
         }));
     }
-    let mut checks = Vec::new();
-    let mut record = |name: &str, check: &mut dyn FnMut(&mut ProgressSink<'_>) -> CheckResult| {
-        progress(Progress::Starting(name));
-        let result = check(progress);
-        progress(Progress::Finished(&result));
-        checks.push(result);
-    };
-    for (i, (a, b)) in catalogue::unit_pairs(task, t).into_iter().enumerate() {
-        let name = format!("estimator: variance independent of units ({})", b.name);
-        let mut pair = Some((a, b));
-        record(&name, &mut |_| {
-            let (a, b) = pair.take().expect("each pair runs once");
-            units_check(a, b, (input.seed, 300 + i as u64))
-        });
+    for (index, (mut original, mut scaled)) in
+        catalogue::unit_pairs(task, t).into_iter().enumerate()
+    {
+        raw.push(measure_raw(&units_name(&scaled.name), progress, || {
+            let outcome = panics::catch(|| {
+                estimator::variances(
+                    original.samples,
+                    (input.seed, 300 + index as u64),
+                    original.estimate.as_mut(),
+                    scaled.estimate.as_mut(),
+                    original.analytic,
+                )
+                .map(|(original, scaled)| Variances { original, scaled })
+            });
+            |seconds| {
+                Raw::Variances(VarianceOutputs {
+                    index,
+                    outcome,
+                    seconds,
+                })
+            }
+        }));
     }
-    let cases = crate::stability::cases_for::<T>(task);
-    if !cases.is_empty() {
-        record("stability", &mut |progress| {
-            stability::run(t, &cases, &mut |case| {
-                progress(Progress::Starting(&format!("stability: {case}")))
-            })
-        });
+    for case in crate::stability::cases_for::<T>(task) {
+        raw.push(measure_raw(
+            &format!("stability: {}", case.name),
+            progress,
+            || {
+                let outcome = panics::catch(|| (case.eval)(t));
+                |seconds| {
+                    Raw::Stability(StabilityOutput {
+                        case: case.name.into(),
+                        outcome,
+                        seconds,
+                    })
+                }
+            },
+        ));
     }
-    (checks, raw)
+    raw
 }
 
 /// Runs `measure` as the step `name`, times it, and reports the raw output it makes (from
@@ -455,48 +604,31 @@ fn estimator_check(
 /// weights that mix measures change the variance many times over.
 pub const UNIT_VARIANCE_RATIO: f64 = 1.5;
 
-fn units_check(
-    mut a: EstimatorSpec<'_>,
-    mut b: EstimatorSpec<'_>,
-    seed: (u64, u64),
-) -> CheckResult {
-    let start = Instant::now();
-    let mut result = CheckResult::new(
-        format!("estimator: variance independent of units ({})", b.name),
-        CheckKind::Estimator,
-    );
+fn units_check(name: &str, variances: &VarianceOutputs) -> CheckResult {
+    let mut result = CheckResult::new(name, CheckKind::Estimator);
     result.total = 1;
-    let outcome = panics::catch(|| {
-        estimator::variances(
-            a.samples,
-            seed,
-            a.estimate.as_mut(),
-            b.estimate.as_mut(),
-            a.analytic,
-        )
-    });
-    match outcome {
-        Ok(Ok((va, vb))) => {
-            let ratio = vb / va;
+    match &variances.outcome {
+        Ok(Ok(Variances { original, scaled })) => {
+            let ratio = scaled / original;
             result.summary = format!(
                 "variance per sample {} in the original units, {} with lengths scaled (ratio {})",
-                super::output::fmt_num(va),
-                super::output::fmt_num(vb),
+                super::output::fmt_num(*original),
+                super::output::fmt_num(*scaled),
                 super::output::fmt_num(ratio)
             );
+            // Written so that a NaN ratio fails too.
             if !(1.0 / UNIT_VARIANCE_RATIO..=UNIT_VARIANCE_RATIO).contains(&ratio) {
                 result.fail(format!(
-                    "{}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
-                    b.name,
+                    "{name}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
                     super::output::fmt_num(ratio)
                 ));
             }
         }
-        Ok(Err(message)) => result.fail(message),
-        Err(p) => result.fail_panic(&b.name, &p),
+        Ok(Err(message)) => result.fail(message.clone()),
+        Err(p) => result.fail_panic(name, p),
     }
     result.finish();
-    result.seconds = start.elapsed().as_secs_f64();
+    result.seconds = variances.seconds;
     result
 }
 

@@ -9,15 +9,17 @@ use std::path::Path;
 
 /// A Monte Carlo render: the per-pixel mean and the variance of that mean, linear RGB,
 /// row-major, 3 floats per pixel.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ImageStats {
     /// Width in pixels.
     pub width: usize,
     /// Height in pixels.
     pub height: usize,
     /// Mean radiance per pixel-channel.
+    #[serde(with = "super::lenient_f64::seq_f32")]
     pub mean: Vec<f32>,
     /// Variance of each mean (sample variance / sample count).
+    #[serde(with = "super::lenient_f64::seq_f32")]
     pub variance: Vec<f32>,
 }
 

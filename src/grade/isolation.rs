@@ -7,10 +7,8 @@
 
 use super::checks::Raw;
 use super::sandbox::{Policy, Protections};
-use super::verdict::CheckResult;
 use super::worker::{
-    CHECK_MARKER, Delivery, Job, JobKind, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER,
-    STEP_MARKER,
+    Delivery, Job, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
 };
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
@@ -18,33 +16,40 @@ use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
+/// The name of the binary that runs student code for the grader (`src/worker_main.rs`).
+pub const WORKER_BINARY: &str = "pbrlab-worker";
+
 /// Threads a worker's renders may use.
 pub const WORKER_THREADS: usize = 2;
 
 /// How to start a worker: the program, its arguments and extra environment.
 #[derive(Clone, Debug)]
 pub struct Launcher {
-    /// The executable (normally the running `pbrlab` binary).
+    /// The executable (normally the `pbrlab-worker` binary beside the running `pbrlab`).
     pub program: PathBuf,
-    /// Arguments that make it a worker (normally `grade-worker`).
+    /// Arguments that make it a worker (none for `pbrlab-worker`).
     pub args: Vec<String>,
     /// Extra environment variables.
     pub env: Vec<(String, String)>,
 }
 
 impl Launcher {
-    /// The running executable started as `pbrlab grade-worker`. On Linux this is
-    /// `/proc/self/exe`, the very file the grader runs from, even if a rebuild has replaced
-    /// the binary at its path since.
+    /// The `pbrlab-worker` binary built beside the running executable. It links the
+    /// student's code, the reference and the renderer, but not the grader's expected data
+    /// or reference renders (nothing reachable from its `main` uses them, so the linker
+    /// leaves them out: `tests/instructor_hostile.rs` checks the file).
     pub fn current_exe() -> anyhow::Result<Self> {
-        let own = Path::new("/proc/self/exe");
+        let own = std::env::current_exe()?;
+        let program =
+            own.with_file_name(format!("{WORKER_BINARY}{}", std::env::consts::EXE_SUFFIX));
+        anyhow::ensure!(
+            program.is_file(),
+            "the worker binary {} is missing: build it with `cargo build --release`",
+            program.display()
+        );
         Ok(Self {
-            program: if own.exists() {
-                own.to_path_buf()
-            } else {
-                std::env::current_exe()?
-            },
-            args: vec!["grade-worker".into()],
+            program,
+            args: Vec::new(),
             env: Vec::new(),
         })
     }
@@ -93,9 +98,7 @@ pub struct WorkerRun {
     /// The last step (check or stability case) the worker announced: where it was when it
     /// crashed or ran out of time.
     pub step: Option<String>,
-    /// The checks that finished, kept for a worker that dies later.
-    pub finished: Vec<CheckResult>,
-    /// The raw outputs that were ready, likewise.
+    /// The raw outputs that were ready, kept for a worker that dies later.
     pub finished_raw: Vec<Raw>,
     /// The protections the worker reported in force before any student code ran.
     pub protections: Option<Protections>,
@@ -109,7 +112,6 @@ impl WorkerRun {
             output: String::new(),
             seconds: 0.0,
             step: None,
-            finished: Vec::new(),
             finished_raw: Vec::new(),
             protections: None,
         }
@@ -150,17 +152,6 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             )));
         }
     };
-    // A render writes its pictures into the scratch directory; they are copied out once
-    // the worker is gone.
-    let mut job = job.clone();
-    let pictures = match &mut job.kind {
-        JobKind::Render { report_dir, .. } => report_dir.take().map(|dest| {
-            let inside = scratch.path().join("pictures");
-            *report_dir = Some(inside.clone());
-            (inside, dest)
-        }),
-        _ => None,
-    };
     let delivery = Delivery {
         sandbox: Policy {
             memory_limit: job.memory_limit,
@@ -168,34 +159,9 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             readable: vec![crate::repository_root().join("scenes")],
             writable: vec![scratch.path().to_path_buf()],
         },
-        job,
+        job: job.clone(),
     };
-    let mut run = run_in(launcher, &delivery, scratch.path(), timeout, start);
-    if let Some((inside, dest)) = pictures
-        && let Err(e) = copy_pictures(&inside, &dest)
-    {
-        run.output
-            .push_str(&format!("(pictures not copied to the report: {e:#})\n"));
-    }
-    run
-}
-
-/// Copies the PNG pictures a render worker left in `from` to `to`.
-fn copy_pictures(from: &Path, to: &Path) -> anyhow::Result<()> {
-    use anyhow::Context;
-    let Ok(entries) = std::fs::read_dir(from) else {
-        return Ok(());
-    };
-    std::fs::create_dir_all(to).with_context(|| format!("creating {}", to.display()))?;
-    for entry in entries.flatten() {
-        let path = entry.path();
-        let is_png = path.extension().is_some_and(|e| e == "png");
-        if is_png && entry.file_type().is_ok_and(|t| t.is_file()) {
-            let dest = to.join(entry.file_name());
-            std::fs::copy(&path, &dest).with_context(|| format!("copying {}", dest.display()))?;
-        }
-    }
-    Ok(())
+    run_in(launcher, &delivery, scratch.path(), timeout, start)
 }
 
 /// One line of a worker's stdout, as text (invalid UTF-8 replaced), at most
@@ -274,9 +240,6 @@ fn run_in(
                     seen.record = Some(serde_json::from_str::<Record>(json.trim()));
                 } else if let Some(step) = marked(&line, STEP_MARKER, &nonce) {
                     seen.step = Some(step.trim().to_owned());
-                } else if let Some(json) = marked(&line, CHECK_MARKER, &nonce) {
-                    seen.finished
-                        .extend(serde_json::from_str::<CheckResult>(json.trim()));
                 } else if let Some(json) = marked(&line, RAW_MARKER, &nonce) {
                     seen.finished_raw
                         .extend(serde_json::from_str::<Raw>(json.trim()));
@@ -311,7 +274,6 @@ fn run_in(
         started,
         printed,
         step,
-        finished,
         finished_raw,
         protections,
     } = stdout
@@ -353,7 +315,6 @@ fn run_in(
         output,
         seconds,
         step,
-        finished,
         finished_raw,
         protections,
     }
@@ -366,7 +327,6 @@ struct Seen {
     started: bool,
     printed: String,
     step: Option<String>,
-    finished: Vec<CheckResult>,
     finished_raw: Vec<Raw>,
     protections: Option<Protections>,
 }

@@ -72,12 +72,66 @@ pub mod seq {
     }
 }
 
+/// The same for a list of f32 (`#[serde(with = "lenient_f64::seq_f32")]`): finite values
+/// written at f32 precision, read back exactly.
+pub mod seq_f32 {
+    use serde::ser::SerializeSeq;
+    use serde::{Deserializer, Serializer};
+
+    /// Writes each element as [`super::serialize`] does, finite ones as f32.
+    pub fn serialize<S: Serializer>(xs: &[f32], s: S) -> Result<S::Ok, S::Error> {
+        struct Element(f32);
+        impl serde::Serialize for Element {
+            fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                if self.0.is_finite() {
+                    s.serialize_f32(self.0)
+                } else {
+                    super::serialize(&(self.0 as f64), s)
+                }
+            }
+        }
+        let mut seq = s.serialize_seq(Some(xs.len()))?;
+        for &x in xs {
+            seq.serialize_element(&Element(x))?;
+        }
+        seq.end()
+    }
+
+    /// Reads what [`serialize`] writes.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f32>, D::Error> {
+        Ok(super::seq::deserialize(d)?
+            .into_iter()
+            .map(|x| x as f32)
+            .collect())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #[derive(serde::Serialize, serde::Deserialize, Debug)]
     struct X {
         #[serde(with = "super")]
         v: f64,
+    }
+
+    #[derive(serde::Serialize, serde::Deserialize, Debug, PartialEq)]
+    struct Xs(#[serde(with = "super::seq_f32")] Vec<f32>);
+
+    #[test]
+    fn f32_lists_round_trip_exactly_with_their_non_finite_values() {
+        let xs = vec![
+            0.1f32,
+            1.0 / 3.0,
+            f32::MAX,
+            f32::MIN_POSITIVE,
+            -0.0,
+            f32::INFINITY,
+        ];
+        let json = serde_json::to_string(&Xs(xs.clone())).unwrap();
+        assert_eq!(serde_json::from_str::<Xs>(&json).unwrap(), Xs(xs), "{json}");
+        let back: Xs =
+            serde_json::from_str(&serde_json::to_string(&Xs(vec![f32::NAN])).unwrap()).unwrap();
+        assert!(back.0[0].is_nan());
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! handout grades renders without solutions; the instructor test
 //! `tests/instructor_renders.rs` writes them and checks them against fresh reference renders.
 
+use super::checks::{ImageOutputs, Rendered};
 use super::image_check::{self, ImageStats};
 use super::verdict::CheckResult;
 use crate::render::{RenderOptions, render};
@@ -169,9 +170,32 @@ pub fn write_reference(dir: &Path, scene: &str, stats: &ImageStats) -> anyhow::R
     Ok(())
 }
 
-/// The render check of `scene` on `t`: render with seed `seed`, compare with the stored
-/// reference, and write the pictures into `report_dir` when given.
-pub fn check<T: Tasks>(t: &T, scene: &str, seed: u64, report_dir: Option<&Path>) -> CheckResult {
+/// The worker's half of a render check: renders `scene` with `t` and seed `seed`, and
+/// returns the statistics for the grader to compare (the stored reference never enters the
+/// worker).
+pub fn render_raw<T: Tasks>(t: &T, scene: &str, seed: u64) -> ImageOutputs {
+    let start = std::time::Instant::now();
+    let outcome = match load(scene) {
+        Ok(loaded) => crate::panics::catch(|| {
+            let (stats, rejected) = render_stats(&loaded, t, STUDENT_SPP, seed);
+            Ok(Rendered { stats, rejected })
+        }),
+        Err(e) => Ok(Err(format!("{e:#}"))),
+    };
+    ImageOutputs {
+        scene: scene.into(),
+        outcome,
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// The grader's half: compares the worker's render of `scene` (`None` when none came back)
+/// with the stored reference, and writes the pictures into `report_dir` when given.
+pub fn judge(
+    scene: &str,
+    rendered: Option<&ImageOutputs>,
+    report_dir: Option<&Path>,
+) -> CheckResult {
     let fail = |message: String| {
         let mut r = CheckResult::new(format!("image: {scene}"), super::verdict::CheckKind::Image);
         r.total = 1;
@@ -184,29 +208,36 @@ pub fn check<T: Tasks>(t: &T, scene: &str, seed: u64, report_dir: Option<&Path>)
         Ok(None) => return fail(format!("no stored reference render of {scene}")),
         Err(e) => return fail(format!("{e:#}")),
     };
-    let loaded = match load(scene) {
-        Ok(s) => s,
-        Err(e) => return fail(format!("{e:#}")),
+    let Some(rendered) = rendered.filter(|r| r.scene == scene) else {
+        return fail(format!(
+            "{scene}: no render came back from the worker (it stopped before the render ended)"
+        ));
     };
-    let outcome = crate::panics::catch(|| render_stats(&loaded, t, STUDENT_SPP, seed));
-    let (student, rejected) = match outcome {
-        Ok(r) => r,
+    let Rendered { stats, rejected } = match &rendered.outcome {
+        Ok(Ok(r)) => r,
+        Ok(Err(message)) => return fail(message.clone()),
         Err(p) => {
             let mut r = fail(String::new());
             r.failures.clear();
             r.failed = 0;
-            r.fail_panic(&format!("rendering {scene}"), &p);
+            r.fail_panic(&format!("rendering {scene}"), p);
             r.finish();
             return r;
         }
     };
-    let mut result = image_check::run(scene, &student, &reference, report_dir);
-    if rejected > 0 {
+    let mut result = image_check::run(scene, stats, &reference, report_dir);
+    if *rejected > 0 {
         result.fail(format!(
             "{scene}: {rejected} of {} samples were NaN, infinite or negative and had to be dropped",
-            student.width * student.height * STUDENT_SPP as usize
+            stats.width * stats.height * STUDENT_SPP as usize
         ));
         result.finish();
     }
+    result.seconds = rendered.seconds;
     result
+}
+
+/// The render check of `scene` on `t` in this process: [`render_raw`] then [`judge`].
+pub fn check<T: Tasks>(t: &T, scene: &str, seed: u64, report_dir: Option<&Path>) -> CheckResult {
+    judge(scene, Some(&render_raw(t, scene, seed)), report_dir)
 }

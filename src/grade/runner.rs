@@ -1,7 +1,7 @@
 //! Grading a set of tasks: load the expected data, decide which implementation grades which
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
-use super::checks::{TaskInput, judge_task, score};
+use super::checks::{TaskInput, judge_finished, judge_task, score};
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
 use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
@@ -360,7 +360,6 @@ fn grade_renders(
                 kind: JobKind::Render {
                     scene: check.scene.into(),
                     seed: options.seed.wrapping_add(0x5ce4e),
-                    report_dir: options.report_dir.clone(),
                 },
                 memory_limit: options.memory_limit,
             },
@@ -374,15 +373,7 @@ fn grade_renders(
     for ((i, _), run) in jobs.iter().zip(runs) {
         let check = super::renders::RENDER_CHECKS[*i];
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
-        let mut outcome = outcome(TaskId::PathTrace, &TaskInput::default(), run);
-        outcome.task = scene_entry(check.scene);
-        outcome.max_points = check.points;
-        outcome.points = if outcome.status == TaskStatus::Passed {
-            check.points
-        } else {
-            0.0
-        };
-        results.push(outcome);
+        results.push(render_outcome(check, run, options.report_dir.as_deref()));
     }
     results.sort_by_key(|o| {
         super::renders::RENDER_CHECKS
@@ -413,13 +404,13 @@ fn has_code_checks(task: TaskId) -> bool {
 pub const HIDDEN_OUTPUT: &str =
     "(the code's output is not shown: hidden cases were graded in the same run)\n";
 
-/// A task's outcome from its worker run: the worker's raw outputs judged against `input`'s
-/// expected data, and the worker's other checks.
+/// A task's outcome from its worker run: every check of the task, judged from the
+/// worker's raw outputs against `input`'s expected data.
 pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> TaskOutcome {
     let max_points = task.info().points as f64;
     let (status, points, checks) = match run.outcome {
-        Ok(Record::Checks { checks, raw }) => {
-            let checks = judge_task(task, input, checks, &raw);
+        Ok(Record::Outputs { raw }) => {
+            let checks = judge_task(task, input, &raw);
             let (status, points) = score(task, &checks);
             (status, points, checks)
         }
@@ -438,7 +429,7 @@ pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> Ta
                 Some(step) => format!("{reason}, while running {step}"),
                 None => reason,
             };
-            let finished = judge_task(task, input, run.finished, &run.finished_raw);
+            let finished = judge_finished(task, input, &run.finished_raw);
             (TaskStatus::Crashed { reason }, 0.0, finished)
         }
     };
@@ -452,6 +443,65 @@ pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> Ta
         status,
         points,
         max_points,
+        checks,
+        output: run.output,
+        seconds: run.seconds,
+    }
+}
+
+/// A scene's outcome from its render worker's run: the render judged against the stored
+/// reference (pictures written into `report_dir` when given), all of the scene's points or
+/// none.
+fn render_outcome(
+    check: super::renders::RenderCheck,
+    run: isolation::WorkerRun,
+    report_dir: Option<&std::path::Path>,
+) -> TaskOutcome {
+    let image = |raw: &[super::checks::Raw]| {
+        let rendered = raw.iter().find_map(|r| match r {
+            super::checks::Raw::Image(image) => Some(image),
+            _ => None,
+        });
+        let mut result = super::renders::judge(check.scene, rendered, report_dir);
+        result.weight = 1.0;
+        vec![result]
+    };
+    let (status, checks) = match run.outcome {
+        Ok(Record::Outputs { raw }) => {
+            let checks = image(&raw);
+            let status = if checks.iter().all(|c| c.passed) {
+                TaskStatus::Passed
+            } else {
+                TaskStatus::Failed
+            };
+            (status, checks)
+        }
+        Ok(Record::Attempted { .. } | Record::Stability { .. }) => (
+            TaskStatus::GraderError {
+                message: "the worker answered another job instead of rendering".into(),
+            },
+            Vec::new(),
+        ),
+        Ok(Record::Error { message }) | Err(isolation::WorkerFailure::Grader(message)) => {
+            (TaskStatus::GraderError { message }, Vec::new())
+        }
+        Err(isolation::WorkerFailure::Student(reason)) => {
+            let reason = match &run.step {
+                Some(step) => format!("{reason}, while running {step}"),
+                None => reason,
+            };
+            (TaskStatus::Crashed { reason }, image(&run.finished_raw))
+        }
+    };
+    TaskOutcome {
+        task: scene_entry(check.scene),
+        points: if status == TaskStatus::Passed {
+            check.points
+        } else {
+            0.0
+        },
+        status,
+        max_points: check.points,
         checks,
         output: run.output,
         seconds: run.seconds,

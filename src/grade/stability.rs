@@ -2,28 +2,38 @@
 //! α → 0, equal indices, exactly the critical angle, …) must return finite values in range
 //! with the right limit.
 //!
-//! The cases are the catalogue of `pbrlab stability` ([`crate::stability::cases_for`]);
-//! here they run inside the grader's worker, so a case that hangs or crashes is covered by
-//! the worker's time limit instead of a thread per case.
+//! The cases are the catalogue of `pbrlab stability` ([`crate::stability::cases_for`]). The
+//! worker calls each case and sends back what the task returned
+//! ([`super::checks::StabilityOutput`]); the grader judges those values here, so a case
+//! whose value never came back (the worker hung or crashed on it, or left it out) fails.
 
+use super::checks::Raw;
 use super::verdict::{CheckKind, CheckResult};
-use crate::panics;
 use crate::stability::{Case, Verdict};
-use crate::worksheet::Tasks;
-use std::time::Instant;
 
-/// Runs every case on `t`, each isolated from panics, into one check; `starting` hears each
-/// case's name before it runs.
-pub fn run<T: Tasks>(t: &T, cases: &[Case<T>], starting: &mut dyn FnMut(&str)) -> CheckResult {
-    let start = Instant::now();
+/// Judges the worker's stability outputs in `raw` against `cases`, into one check, with
+/// whether every case's output was there.
+pub fn judge<T>(cases: &[Case<T>], raw: &[Raw]) -> (CheckResult, bool) {
+    let mut complete = true;
     let mut result = CheckResult::new("stability", CheckKind::Stability);
     result.total = cases.len();
     for case in cases {
-        starting(case.name);
         let context = format!("{} [{}]", case.input, case.name);
-        match panics::catch(|| (case.eval)(t)) {
+        let output = raw.iter().find_map(|r| match r {
+            Raw::Stability(output) if output.case == case.name => Some(output),
+            _ => None,
+        });
+        let Some(output) = output else {
+            complete = false;
+            result.fail(format!(
+                "{context}: no value came back from the worker (it stopped before this case)"
+            ));
+            continue;
+        };
+        result.seconds += output.seconds;
+        match &output.outcome {
             Ok(value) => {
-                let verdict = case.judge(&value);
+                let verdict = case.judge(value);
                 if verdict != Verdict::Pass {
                     result.fail(format!(
                         "{context}: got {value} ({verdict}), expected {} ({})",
@@ -32,7 +42,7 @@ pub fn run<T: Tasks>(t: &T, cases: &[Case<T>], starting: &mut dyn FnMut(&str)) -
                     ));
                 }
             }
-            Err(p) => result.fail_panic(&context, &p),
+            Err(p) => result.fail_panic(&context, p),
         }
     }
     result.finish();
@@ -41,6 +51,5 @@ pub fn run<T: Tasks>(t: &T, cases: &[Case<T>], starting: &mut dyn FnMut(&str)) -
         result.total - result.failed,
         result.total
     );
-    result.seconds = start.elapsed().as_secs_f64();
-    result
+    (result, complete)
 }

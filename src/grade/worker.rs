@@ -1,18 +1,17 @@
 //! The child side of isolation: a worker process grades one task and reports back.
 //!
-//! The grader starts a worker (`pbrlab grade-worker`, hidden) per task and writes a [`Job`]
+//! The grader starts a worker (the `pbrlab-worker` binary, which has no expected data in
+//! it) per task and writes a [`Job`]
 //! to its stdin. The worker reads the whole job before any student code runs, limits its own
 //! address space, runs the checks, and prints one line `PBRLAB-RESULT <nonce> <json>` on
-//! stdout. The nonce is a fresh random string the student's code never sees (stdin is
-//! drained first), so printing a fake result line or exiting early cannot pass a task: the
-//! grader accepts only a line with its nonce, and treats a worker that exits without one as
-//! having crashed.
+//! stdout. What it sends back is raw outputs only (values, samples, estimates, images,
+//! stability values: [`Raw`]), never a verdict: the grader holds the expected data and
+//! judges them. The nonce is a fresh random string the student's code never sees (stdin is
+//! drained first), and a worker that exits without a result line has crashed.
 
-use super::checks::{Progress, ProgressSink, Raw, WorkerInput, run_task};
+use super::checks::{Progress, ProgressSink, Raw, StabilityOutput, WorkerInput, run_task};
 use super::sandbox::{self, Policy};
-use super::verdict::CheckResult;
 use crate::panics;
-use crate::stability::runner::CaseResult;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::anyhow;
 use serde::{Deserialize, Serialize};
@@ -26,13 +25,9 @@ pub const RESULT_MARKER: &str = "PBRLAB-RESULT";
 /// line says where.
 pub const STEP_MARKER: &str = "PBRLAB-STEP";
 
-/// The marker of the line a worker prints when a check finishes, followed by the nonce and
-/// the check as JSON: when the worker dies later, the checks that finished are kept.
-pub const CHECK_MARKER: &str = "PBRLAB-CHECK";
-
 /// The marker of the line a worker prints when raw outputs are ready (a values check's
-/// outputs, a sampling check's counts), followed by the nonce and the [`Raw`] as JSON: the
-/// grader judges them, and keeps them when the worker dies later.
+/// outputs, a sampling check's counts, …), followed by the nonce and the [`Raw`] as JSON:
+/// the grader judges them, and keeps them when the worker dies later.
 pub const RAW_MARKER: &str = "PBRLAB-RAW";
 
 /// The marker of the line a worker prints once it has its job and has entered its sandbox,
@@ -92,14 +87,12 @@ pub enum JobKind {
         /// The case's name (`smith_g1/alpha_zero`).
         case: String,
     },
-    /// Render a scene and compare it with the stored reference render.
+    /// Render a scene (the grader compares it with the stored reference render).
     Render {
         /// The scene's name (see [`super::renders::RENDER_CHECKS`]).
         scene: String,
         /// Seed of the render.
         seed: u64,
-        /// Where to write the pictures for the HTML report.
-        report_dir: Option<std::path::PathBuf>,
     },
 }
 
@@ -129,12 +122,9 @@ pub struct Job {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "record", rename_all = "snake_case")]
 pub enum Record {
-    /// The checks of a graded task.
-    Checks {
-        /// Every check that ran in the worker.
-        checks: Vec<CheckResult>,
-        /// The raw outputs of the checks the grader judges.
-        #[serde(default)]
+    /// The raw outputs of a graded task's checks, or of a render.
+    Outputs {
+        /// The raw outputs, for the grader to judge.
         raw: Vec<Raw>,
     },
     /// The answer to a probe.
@@ -142,10 +132,10 @@ pub enum Record {
         /// What the probe found.
         attempt: crate::implementation::Attempt,
     },
-    /// The result of a stability case.
+    /// What the task returned on a stability case.
     Stability {
-        /// What the case gave.
-        result: CaseResult,
+        /// The value or the panic, for the caller to judge.
+        output: StabilityOutput,
     },
     /// The worker could not run the job (not the student's fault).
     Error {
@@ -158,28 +148,25 @@ pub enum Record {
 pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>) -> Record {
     let task_of = |name: &str| TaskId::parse(name).map_err(|e| anyhow!(e));
     let result = match kind {
-        JobKind::Grade { task, input } => task_of(task).map(|task| {
-            let (checks, raw) = run_task(t, task, input, progress);
-            Record::Checks { checks, raw }
+        JobKind::Grade { task, input } => task_of(task).map(|task| Record::Outputs {
+            raw: run_task(t, task, input, progress),
         }),
-        JobKind::Render {
-            scene,
-            seed,
-            report_dir,
-        } => Ok(Record::Checks {
-            checks: vec![super::renders::check(
-                t,
-                scene,
-                *seed,
-                report_dir.as_deref(),
-            )],
-            raw: Vec::new(),
+        JobKind::Render { scene, seed } => Ok(Record::Outputs {
+            raw: vec![Raw::Image(super::renders::render_raw(t, scene, *seed))],
         }),
         JobKind::Stability { case } => crate::stability::cases::<T>()
             .iter()
             .find(|c| c.name == case)
-            .map(|c| Record::Stability {
-                result: crate::stability::runner::evaluate_case(c, t),
+            .map(|c| {
+                let start = std::time::Instant::now();
+                let outcome = panics::catch(|| (c.eval)(t));
+                Record::Stability {
+                    output: StabilityOutput {
+                        case: c.name.into(),
+                        outcome,
+                        seconds: start.elapsed().as_secs_f64(),
+                    },
+                }
             })
             .ok_or_else(|| anyhow!("the stability catalogue has no case `{case}`")),
         JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
@@ -208,7 +195,7 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
     let Delivery { job, sandbox } = match delivery {
         Ok(delivery) => delivery,
         Err(e) => {
-            eprintln!("grade-worker: cannot read the job on stdin: {e}");
+            eprintln!("pbrlab-worker: cannot read the job on stdin: {e}");
             std::process::exit(2);
         }
     };
@@ -227,10 +214,6 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
             Progress::Starting(name) => {
                 format!("{STEP_MARKER} {nonce} {}", name.replace('\n', " "))
             }
-            Progress::Finished(check) => match serde_json::to_string(check) {
-                Ok(json) => format!("{CHECK_MARKER} {nonce} {json}"),
-                Err(_) => return,
-            },
             Progress::Raw(raw) => match serde_json::to_string(raw) {
                 Ok(json) => format!("{RAW_MARKER} {nonce} {json}"),
                 Err(_) => return,

@@ -1,4 +1,4 @@
-//! Stability cases in worker processes: each case runs in a `grade-worker` of its own, so a
+//! Stability cases in worker processes: each case runs in a `pbrlab-worker` of its own, so a
 //! case that overflows the stack, aborts or never returns is reported as a crash or a hang
 //! and every other case still runs. `pbrlab stability` works this way; [`super::run_cases`]
 //! runs cases on threads of the calling process instead.
@@ -42,7 +42,9 @@ pub fn run_isolated(
         .zip(runs)
         .map(|(case, run)| {
             let result = match run.outcome {
-                Ok(Record::Stability { result }) => result,
+                Ok(Record::Stability { output }) if output.case == case.name => {
+                    super::runner::judge_output(case, &output)
+                }
                 Ok(Record::Error { message }) | Err(WorkerFailure::Grader(message)) => {
                     bail!("{}: the stability worker failed: {message}", case.name)
                 }

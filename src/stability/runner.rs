@@ -6,6 +6,7 @@ use super::case::Case;
 use super::expect::Expect;
 use super::value::Value;
 use super::verdict::Verdict;
+use crate::grade::checks::StabilityOutput;
 use crate::implementation::{is_todo_panic, panic_message};
 use crate::panics::QuietPanics;
 use crate::worksheet::{TaskId, Tasks};
@@ -163,12 +164,16 @@ impl CaseResult {
     }
 }
 
-/// Runs one case on `imp` in this thread and judges it, with no time limit: for a process
-/// that is itself the isolation (the grader's worker), whose parent enforces the limit.
-pub fn evaluate_case<T: Tasks>(case: &Case<T>, imp: &T) -> CaseResult {
-    let start = Instant::now();
-    let ended = call(case.eval, imp);
-    CaseResult::judged(case, Some(ended), start.elapsed())
+/// Judges what a worker process sent back for `case` (the value, or the panic that stopped
+/// the call): the worker only runs the case, its parent judges it.
+pub fn judge_output(case: &Case<impl Sized>, output: &StabilityOutput) -> CaseResult {
+    let ended = match &output.outcome {
+        Ok(value) => Ended::Returned(value.clone()),
+        Err(p) if p.message.starts_with(crate::implementation::TODO_MESSAGE) => Ended::Todo,
+        Err(p) => Ended::Panicked(p.message.clone()),
+    };
+    let seconds = Duration::try_from_secs_f64(output.seconds).unwrap_or_default();
+    CaseResult::judged(case, Some(ended), seconds)
 }
 
 /// Runs one case on `imp` on its own thread and judges the result. A call that has not
