@@ -15,5 +15,5 @@ fn main() {
         #[cfg(not(feature = "solutions"))]
         reference: None,
     });
-    pbrlab::grade::worker::serve(pbrlab::grade::worker::production_impl)
+    pbrlab::grade::worker::serve_production()
 }

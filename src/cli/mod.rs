@@ -47,10 +47,11 @@ pub enum Command {
 
 /// Runs the command line.
 pub fn run(cli: Cli) -> anyhow::Result<()> {
-    // Commands that run the student's code run the code as it is now.
+    // Commands that run the student's code run the code as it is now (the default, a
+    // render, renders the student's code in the handout).
     if matches!(
         cli.command,
-        Some(
+        None | Some(
             Command::Tasks(_)
                 | Command::Grade(_)
                 | Command::Handout(_)

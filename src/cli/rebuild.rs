@@ -1,6 +1,8 @@
 //! A binary older than the exercise files it links would grade, render or probe code the
 //! student has since changed. Before such a command runs, the binary compares the newest
-//! `exercises/*.rs` with its own file and, when an exercise is newer, rebuilds with cargo
+//! `exercises/*.rs` with its own file and the worker binary's (`pbrlab-worker`, which runs
+//! the code for the grader) and, when an exercise is newer or the worker is missing,
+//! rebuilds both with cargo
 //! (only the student's crate and the link: about a second), compiler messages shown as
 //! cargo prints them, and runs the command again in the new binary.
 
@@ -34,11 +36,21 @@ pub fn ensure_current() -> anyhow::Result<()> {
         return Ok(());
     };
     let exe = std::env::current_exe().context("locating this binary")?;
-    let built = std::fs::metadata(&exe).and_then(|m| m.modified());
-    if built.is_ok_and(|b| b >= source) {
+    // The worker binary runs the student's code: it must be current too (`cargo run`
+    // builds only this one).
+    let worker = exe.with_file_name(format!(
+        "{}{}",
+        crate::grade::isolation::WORKER_BINARY,
+        std::env::consts::EXE_SUFFIX
+    ));
+    let built = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified());
+    if [&exe, &worker]
+        .iter()
+        .all(|file| built(file).is_ok_and(|b| b >= source))
+    {
         return Ok(());
     }
-    eprintln!("exercises/ changed since this binary was built: rebuilding");
+    eprintln!("rebuilding: exercises/ is newer than the binaries (or pbrlab-worker is missing)");
     let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
     cargo
         .current_dir(root)

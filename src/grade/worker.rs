@@ -241,6 +241,14 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
     std::process::exit(0);
 }
 
+/// The `pbrlab-worker` binary's whole work: [`serve`] with [`production_impl`]. Not generic,
+/// so it is compiled once with the framework and the worker binary's own crate is a call
+/// (an exercise edit then relinks it in about a second instead of recompiling the grader's
+/// generic code for it).
+pub fn serve_production() -> ! {
+    serve(production_impl)
+}
+
 /// The implementation a production worker grades: the student's code for the tasks `spec`
 /// names over the reference, or the student's code alone in a build without the reference.
 pub fn production_impl(spec: &ImplSpec) -> anyhow::Result<crate::worksheet::TaskFns> {
