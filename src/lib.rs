@@ -57,6 +57,7 @@
 //! [`Tasks`]: worksheet::Tasks
 //! [`task_table!`]: crate::task_table
 
+pub mod atomic_file;
 pub mod bsdf;
 pub mod cli;
 pub mod converge;

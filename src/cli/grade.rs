@@ -103,7 +103,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 fn emit(text: &str, output: Option<&PathBuf>) -> anyhow::Result<()> {
     match output {
-        Some(path) => history::write_atomic(path, text.as_bytes())
+        Some(path) => crate::atomic_file::write(path, text.as_bytes())
             .with_context(|| format!("writing {}", path.display())),
         None => {
             print!("{text}");

@@ -1,31 +1,87 @@
+use crate::grade::history::state_dir;
 use crate::worksheet::TaskId;
-use anyhow::anyhow;
+use anyhow::{Context, anyhow};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
 
 /// Arguments of `pbrlab hint`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// The task (its id, or a unique prefix of it).
     pub task: String,
-    /// Show hints up to this level (1 is the gentlest). Default: all levels.
-    #[arg(long)]
+    /// Show the hints up to this level (1 is the gentlest) instead of the next unseen one.
+    #[arg(long, conflicts_with = "all")]
     pub level: Option<usize>,
+    /// Show every hint of the task, the last of which comes close to the answer.
+    #[arg(long)]
+    pub all: bool,
 }
 
-/// Prints a task's hints up to the requested level.
+/// The file that remembers, per task, how many hint levels have been shown.
+fn seen_path() -> PathBuf {
+    state_dir().join("hints-seen.json")
+}
+
+/// Levels shown so far, per task id (an unreadable file counts as nothing seen).
+fn load_seen() -> BTreeMap<String, usize> {
+    std::fs::read_to_string(seen_path())
+        .ok()
+        .and_then(|text| serde_json::from_str(&text).ok())
+        .unwrap_or_default()
+}
+
+/// Shows the task's next unseen hint (or the levels asked for) and remembers it, so the
+/// next call goes one level further: one step at a time, as the hints are written.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
     let info = task.info();
     let levels = info.hints.len();
-    let shown = args.level.unwrap_or(levels).clamp(1, levels);
+    if levels == 0 {
+        println!("{} has no hints.", info.id);
+        return Ok(());
+    }
+    let mut seen = load_seen();
+    let before = seen.get(info.id).copied().unwrap_or(0).min(levels);
+    let (first, last) = match (args.all, args.level) {
+        (true, _) => (1, levels),
+        (false, Some(level)) => (1, level.clamp(1, levels)),
+        (false, None) => {
+            let next = (before + 1).min(levels);
+            (next, next)
+        }
+    };
     println!(
         "{} — {} (worksheet {}, exercises/{}.rs)",
         info.id, info.title, info.section, info.id
     );
-    for (i, hint) in info.hints.iter().take(shown).enumerate() {
+    for (i, hint) in info.hints.iter().enumerate().take(last).skip(first - 1) {
         println!("\nhint {}/{}: {}", i + 1, levels, hint);
     }
-    if shown < levels {
-        println!("\nMore: pbrlab hint {} --level {}", info.id, shown + 1);
+    if first > 1 {
+        let earlier = match first - 1 {
+            1 => "level 1".to_string(),
+            n => format!("levels 1–{n}"),
+        };
+        println!(
+            "\n({earlier} shown before: `pbrlab hint {} --level {}` shows them again)",
+            info.id,
+            first - 1
+        );
+    }
+    if last < levels {
+        println!(
+            "\nStill stuck? `pbrlab hint {}` again shows hint {}.",
+            info.id,
+            last + 1
+        );
+    } else if args.level.is_none() && !args.all && before == levels {
+        println!("\nThat was the last hint of {}.", info.id);
+    }
+    if last > before {
+        seen.insert(info.id.to_string(), last);
+        let path = seen_path();
+        crate::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
+            .with_context(|| format!("remembering the hints shown in {}", path.display()))?;
     }
     Ok(())
 }

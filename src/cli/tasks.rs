@@ -1,6 +1,8 @@
-use crate::grade::history;
+use crate::grade::history::{self, Graded, Progress};
 use crate::grade::isolation::Launcher;
-use crate::grade::verdict::{GradeReport, TaskStatus};
+use crate::grade::renders::RENDER_CHECKS;
+use crate::grade::runner::scene_entry;
+use crate::grade::verdict::TaskStatus;
 use crate::implementation::student_attempted;
 use crate::task_set::TaskSet;
 use crate::worksheet::{TaskId, task_functions};
@@ -9,17 +11,18 @@ use crate::worksheet::{TaskId, task_functions};
 #[derive(clap::Args, Debug, Default)]
 pub struct Args {}
 
-/// The status column of a task: the last grade's verdict when there is one (older than the
-/// code, maybe: the table says when it was graded), otherwise whether the stub is replaced
-/// (`attempted`, probed in workers).
-fn status(task: TaskId, last: Option<&GradeReport>, attempted: TaskSet) -> String {
-    match last.and_then(|r| r.task(task.name())) {
-        Some(t) if t.max_points > 0.0 => {
-            let stale = if changed_since_grade(task) {
+/// The status column of a task: its latest grade when there is one (saying when the file
+/// was edited since), otherwise whether the stub is replaced (`attempted`, probed in
+/// workers).
+fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> String {
+    match progress.get(task.name()) {
+        Some(graded) if graded.outcome.max_points > 0.0 => {
+            let stale = if changed_since(task, graded) {
                 ", edited since"
             } else {
                 ""
             };
+            let t = &graded.outcome;
             format!(
                 "{} ({:.1}/{}{stale})",
                 t.status.label(),
@@ -27,61 +30,77 @@ fn status(task: TaskId, last: Option<&GradeReport>, attempted: TaskSet) -> Strin
                 t.max_points
             )
         }
-        Some(t) if t.status == TaskStatus::NoChecks => t.status.label(),
+        Some(graded) if graded.outcome.status == TaskStatus::NoChecks => {
+            graded.outcome.status.label()
+        }
         _ if task_functions(task).is_empty() => "arrives with the renderer".into(),
         _ if attempted.contains(task) => "implemented, not graded yet".into(),
         _ => "not attempted".into(),
     }
 }
 
-/// True when `exercises/<task>.rs` is newer than the last grade.
-fn changed_since_grade(task: TaskId) -> bool {
-    let modified = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+/// True when `exercises/<task>.rs` is newer than the task's grade.
+fn changed_since(task: TaskId, graded: &Graded) -> bool {
     let file = crate::repository_root()
         .join("exercises")
         .join(format!("{}.rs", task.name()));
-    matches!((modified(&file), modified(&history::last_grade_path())), (Some(f), Some(g)) if f > g)
+    std::fs::metadata(file)
+        .and_then(|m| m.modified())
+        .is_ok_and(|modified| modified > graded.time())
 }
 
-/// Prints the task table with the student's progress: the last `pbrlab grade` where there
-/// is one, otherwise which tasks are still stubs.
+/// The status of a scene's render check: its latest grade, or what it waits for.
+fn scene_status(scene: &str, progress: &Progress) -> String {
+    match progress.get(&scene_entry(scene)).map(|g| &g.outcome) {
+        Some(t) => match &t.status {
+            TaskStatus::NeedsTask { task } => format!("waits for {task}"),
+            other => format!("{} ({:.1}/{})", other.label(), t.points, t.max_points),
+        },
+        None => "not graded yet (renders once the tasks it needs pass)".into(),
+    }
+}
+
+/// Prints the task table and the scenes' render checks with the student's progress: each
+/// one's latest `pbrlab grade`, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
-    let last = history::load().filter(|r| r.implementation != "reference");
+    let progress = history::load_progress();
     let attempted = student_attempted(&Launcher::current_exe()?);
     println!("{:<16} {:<62} {:>6}  status", "task", "title", "points");
-    let mut total = 0;
+    let mut total = 0.0;
     for task in TaskId::ALL {
         let info = task.info();
-        total += info.points;
+        total += info.points as f64;
         println!(
             "{:<16} {:<62} {:>6}  {}",
             info.id,
             info.title,
             info.points,
-            status(task, last.as_ref(), attempted)
+            status(task, &progress, attempted)
+        );
+    }
+    for check in RENDER_CHECKS {
+        total += check.points;
+        println!(
+            "{:<16} {:<62} {:>6}  {}",
+            scene_entry(check.scene),
+            format!("render of scenes/{}.yaml with your code", check.scene),
+            check.points,
+            scene_status(check.scene, &progress)
         );
     }
     println!("{:<16} {:<62} {:>6}", "total", "", total);
-    // Render checks of the last grade: what each scene is waiting for, or how it went.
-    for t in last
-        .iter()
-        .flat_map(|r| &r.tasks)
-        .filter(|t| t.task.starts_with("scene: "))
-    {
-        let status = match &t.status {
-            TaskStatus::NeedsTask { task } => format!("waits for {task}"),
-            other => format!("{} ({:.1}/{})", other.label(), t.points, t.max_points),
-        };
-        println!("{:<30} {status}", t.task);
-    }
-    match &last {
-        Some(r) => println!(
-            "\nLast grade: {:.1}/{} ({}). Run `pbrlab grade` again after changing your code.",
-            r.score,
-            r.max_score,
-            history::last_grade_path().display()
-        ),
-        None => println!("\nNot graded yet: run `pbrlab grade` (or `pbrlab watch`)."),
+    let scored: f64 = progress
+        .values()
+        .filter(|g| g.outcome.max_points > 0.0)
+        .map(|g| g.outcome.points)
+        .sum();
+    if progress.is_empty() {
+        println!("\nNot graded yet: run `pbrlab grade` (or `pbrlab watch`).");
+    } else {
+        println!(
+            "\nLatest grades: {scored:.1}/{total} ({}). Run `pbrlab grade` again after changing your code.",
+            history::progress_path().display()
+        );
     }
     Ok(())
 }

@@ -1,38 +1,32 @@
 use super::study::Point;
-use anyhow::{Context, Result};
+use anyhow::Result;
 use std::io::Write;
 use std::path::Path;
 
 /// The CSV header, in column order.
 pub const HEADER: &str = "strategy,spp,wall_s,cpu_s,rel_mse,rmse,efficiency,non_finite";
 
-/// Writes one row per point to `path` (atomically: a temporary file in the same folder,
-/// then a rename). An unknown CPU time is an empty cell.
+/// Writes one row per point to `path` (atomically, see [`crate::atomic_file`]). An unknown
+/// CPU time is an empty cell.
 pub fn write_csv(path: &Path, points: &[Point]) -> Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let mut tmp = tempfile::NamedTempFile::new_in(dir)
-        .with_context(|| format!("creating a temporary file in {}", dir.display()))?;
-    writeln!(tmp, "{HEADER}")?;
-    for p in points {
-        writeln!(
-            tmp,
-            "{},{},{:e},{},{:e},{:e},{:e},{}",
-            quoted(&p.strategy),
-            p.spp,
-            p.wall_s,
-            p.cpu_s.map_or(String::new(), |c| format!("{c:e}")),
-            p.rel_mse,
-            p.rmse,
-            p.efficiency,
-            p.non_finite
-        )?;
-    }
-    tmp.persist(path)
-        .with_context(|| format!("writing {}", path.display()))?;
-    Ok(())
+    crate::atomic_file::write_with(path, |w| {
+        writeln!(w, "{HEADER}")?;
+        for p in points {
+            writeln!(
+                w,
+                "{},{},{:e},{},{:e},{:e},{:e},{}",
+                quoted(&p.strategy),
+                p.spp,
+                p.wall_s,
+                p.cpu_s.map_or(String::new(), |c| format!("{c:e}")),
+                p.rel_mse,
+                p.rmse,
+                p.efficiency,
+                p.non_finite
+            )?;
+        }
+        Ok(())
+    })
 }
 
 /// A CSV field: quoted when it contains a comma, quote or line break.

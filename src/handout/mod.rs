@@ -8,7 +8,7 @@
 
 pub mod manifest;
 
-use crate::grade::history::write_atomic;
+use crate::atomic_file::write as write_atomic;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 

@@ -141,7 +141,9 @@ pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> Re
     let start = Instant::now();
     let mut done_spp = 0;
     for pass in pass_sizes(options.spp) {
-        bar.set_message(format!("{}/{} spp", done_spp + pass, options.spp));
+        // Samples per pixel finished so far (passes double, so the last pass is half the
+        // work: naming the pass's target here read "1024/1024 spp" at 50 %).
+        bar.set_message(format!("{done_spp}/{} spp done", options.spp));
         film.pixels
             .par_chunks_mut(band)
             .zip(samplers.par_chunks_mut(band))

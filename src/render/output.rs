@@ -5,7 +5,7 @@
 use super::Image;
 use anyhow::{Context, Result};
 use image::{ImageFormat, Rgb32FImage, RgbImage};
-use std::io::{BufWriter, Seek, Write};
+use std::io::Seek;
 use std::path::{Path, PathBuf};
 
 /// The sRGB encoding of a linear value in [0, 1].
@@ -18,38 +18,12 @@ pub fn linear_to_srgb(c: f32) -> f32 {
     }
 }
 
-fn write_atomically(
-    path: &Path,
-    write: impl FnOnce(&mut BufWriter<std::fs::File>) -> Result<()>,
-) -> Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let tmp = tempfile::NamedTempFile::new_in(&dir)
-        .with_context(|| format!("cannot create a temporary file in {}", dir.display()))?;
-    let mut writer = BufWriter::new(tmp.reopen()?);
-    write(&mut writer)?;
-    writer.flush()?;
-    writer.get_ref().sync_all()?;
-    // Temporary files are private (0600); an image is not.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(0o644))?;
-    }
-    tmp.persist(path)
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
-}
-
 /// Writes `image` as a linear RGB f32 OpenEXR file.
 pub fn write_exr(path: &Path, image: &Image) -> Result<()> {
     let data: Vec<f32> = image.pixels.iter().flat_map(|p| p.to_array()).collect();
     let buffer = Rgb32FImage::from_raw(image.width, image.height, data)
         .context("image size does not match its pixels")?;
-    write_atomically(path, |w| {
+    crate::atomic_file::write_with(path, |w| {
         w.rewind()?;
         buffer
             .write_to(w, ImageFormat::OpenExr)
@@ -67,7 +41,7 @@ pub fn write_png(path: &Path, image: &Image) -> Result<()> {
         .collect();
     let buffer = RgbImage::from_raw(image.width, image.height, data)
         .context("image size does not match its pixels")?;
-    write_atomically(path, |w| {
+    crate::atomic_file::write_with(path, |w| {
         buffer
             .write_to(w, ImageFormat::Png)
             .with_context(|| format!("cannot encode {}", path.display()))

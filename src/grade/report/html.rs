@@ -158,6 +158,6 @@ pub fn page(report: &GradeReport) -> String {
 pub fn write_html(report: &GradeReport, dir: &Path) -> anyhow::Result<PathBuf> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let path = dir.join("index.html");
-    crate::grade::history::write_atomic(&path, page(report).as_bytes())?;
+    crate::atomic_file::write(&path, page(report).as_bytes())?;
     Ok(path)
 }
