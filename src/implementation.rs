@@ -66,14 +66,18 @@ pub fn mixed(student_tasks: TaskSet) -> TaskFns {
         .fold(*reference(), |table, task| table.with_task(student, task))
 }
 
-/// Which implementation to run, as chosen on the command line.
+/// Which implementation to run, as chosen on the command line. A build without the
+/// reference (the handout) does not list the choices that need it in `--help`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum ImplChoice {
-    /// Every task from `exercises/`.
+    /// Every task from `exercises/` (a grade takes each task's own code, with the reference,
+    /// where the build has it, behind the tasks it builds on).
     Student,
     /// Every task from `solutions/`.
+    #[value(hide = !cfg!(feature = "solutions"))]
     Reference,
     /// The student's code for the tasks that are implemented, the reference for the rest.
+    #[value(hide = !cfg!(feature = "solutions"))]
     Mixed,
 }
 

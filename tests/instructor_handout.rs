@@ -189,4 +189,22 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
     );
     assert!(!refused.status.success());
     assert!(String::from_utf8_lossy(&refused.stderr).contains("needs the reference"));
+    // Its help advertises neither the handout command nor what needs the reference.
+    let help = |args: &[&str]| {
+        let out = cargo(&dir, &[&["run", "--release", "-q", "--"], args].concat());
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let top = help(&["--help"]);
+    assert!(top.contains("grade") && !top.contains("handout"), "{top}");
+    let grade = help(&["grade", "--help"]);
+    assert!(grade.contains("student"), "{grade}");
+    assert!(
+        !grade.contains("mixed") && !grade.contains("- reference"),
+        "{grade}"
+    );
 }

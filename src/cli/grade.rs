@@ -14,8 +14,7 @@ use std::time::Duration;
 pub struct Args {
     /// Tasks to grade (ids or unique prefixes). Default: every task.
     pub tasks: Vec<String>,
-    /// Whose code to grade. `student` grades each task with only that task from
-    /// exercises/ and the reference behind it; `mixed` uses every task you have written.
+    /// Whose code to grade (one of the possible values below).
     #[arg(long = "impl", value_enum, default_value = "student")]
     pub implementation: ImplChoice,
     /// Output format.

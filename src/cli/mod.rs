@@ -34,6 +34,7 @@ pub enum Command {
     /// Regrade every time you save a file in exercises/.
     Watch(watch::Args),
     /// Write the student repository (no solutions) into a directory.
+    #[command(hide = !cfg!(feature = "solutions"))]
     Handout(handout::Args),
     /// Render a scene to EXR and PNG.
     Render(render::Args),

@@ -17,8 +17,8 @@ pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
 pub struct Args {
     /// The scene file (default: scenes/cornell.yaml).
     pub scene: Option<PathBuf>,
-    /// Whose task code renders: `student` (yours), `reference`, or `mixed` (yours where
-    /// implemented, the reference for the rest).
+    /// Whose task code renders (one of the possible values below; by default the
+    /// reference where this build has it, otherwise yours).
     #[arg(long = "impl", value_enum)]
     pub implementation: Option<ImplChoice>,
     /// Samples per pixel (overrides the scene's).
