@@ -141,6 +141,39 @@ fn cargo(dir: &Path, args: &[&str]) -> std::process::Output {
 }
 
 #[test]
+fn the_handout_is_a_git_repository_that_can_put_a_stub_back() {
+    use pbrlab::handout::stubs;
+    use pbrlab::worksheet::TaskId;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("student");
+    pbrlab::handout::write(root(), &dir).expect("handout written");
+    stubs::commit(&dir).expect("the handout committed");
+    let file = dir.join("exercises/smith_g1.rs");
+    let stub = std::fs::read_to_string(&file).unwrap();
+    assert_eq!(stubs::shipped(&dir, TaskId::SmithG1).unwrap(), stub);
+    // A student's work, committed: the stub still comes from the tagged first commit.
+    std::fs::write(&file, "// my work\n").unwrap();
+    let git = |args: &[&str]| {
+        let ok = std::process::Command::new("git")
+            .current_dir(&dir)
+            .args(["-c", "user.name=s", "-c", "user.email=s@s"])
+            .args(args)
+            .status()
+            .unwrap()
+            .success();
+        assert!(ok, "git {args:?}");
+    };
+    git(&["commit", "--quiet", "-am", "work"]);
+    let keep = tmp.path().join("kept");
+    let kept = stubs::reset(&dir, TaskId::SmithG1, &keep)
+        .unwrap()
+        .expect("the file was not the stub");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), stub);
+    assert_eq!(std::fs::read_to_string(kept).unwrap(), "// my work\n");
+    assert_eq!(stubs::reset(&dir, TaskId::SmithG1, &keep).unwrap(), None);
+}
+
+#[test]
 #[ignore = "slow: builds the handout (a second compile of the crate)"]
 fn the_handout_builds_tests_and_grades_without_solutions() {
     let tmp = tempfile::tempdir().unwrap();

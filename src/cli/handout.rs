@@ -29,6 +29,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     let files = handout::write(crate::repository_root(), &args.dir)?;
+    // Without git the handout still works; only `pbrlab reset` needs the first commit.
+    if let Err(e) = handout::stubs::commit(&args.dir) {
+        eprintln!("warning: the handout is not a git repository ({e:#}); `pbrlab reset` needs one");
+    }
     println!(
         "Wrote {} files to {}. Check it builds: cd {} && cargo test --release",
         files.len(),

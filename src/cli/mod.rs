@@ -7,6 +7,7 @@ mod hint;
 mod needs;
 mod rebuild;
 pub mod render;
+mod reset;
 mod stability;
 mod tasks;
 mod watch;
@@ -33,6 +34,8 @@ pub enum Command {
     Grade(grade::Args),
     /// Regrade every time you save a file in exercises/.
     Watch(watch::Args),
+    /// Put the shipped stub of a task back (your version is kept in .pbrlab/reset/).
+    Reset(reset::Args),
     /// Write the student repository (no solutions) into a directory.
     #[command(hide = !cfg!(feature = "solutions"))]
     Handout(handout::Args),
@@ -69,6 +72,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Grade(args)) => grade::run(args),
         Some(Command::Watch(args)) => watch::run(args),
+        Some(Command::Reset(args)) => reset::run(args),
         Some(Command::Handout(args)) => handout::run(args),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Needs(args)) => needs::run(args),

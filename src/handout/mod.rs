@@ -7,6 +7,7 @@
 //! expected data.
 
 pub mod manifest;
+pub mod stubs;
 
 use crate::atomic_file::write as write_atomic;
 use anyhow::{Context, bail};

@@ -1,0 +1,85 @@
+//! The shipped stubs of the exercises, kept in git so that a student can go back to one
+//! (`pbrlab reset TASK`): the handout is a git repository whose first commit, tagged
+//! [`TAG`], is the handout as written; in the instructor repository, which has no such tag,
+//! the committed exercises are the stubs.
+
+use crate::worksheet::TaskId;
+use anyhow::{Context, bail};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// The tag of the handout's first commit.
+pub const TAG: &str = "pbrlab-stubs";
+
+/// Runs git in `dir` with `args` and a fixed identity (a student's machine may have none).
+fn git(dir: &Path, args: &[&str]) -> anyhow::Result<Output> {
+    let out = Command::new("git")
+        .current_dir(dir)
+        .args([
+            "-c",
+            "user.name=pbrlab",
+            "-c",
+            "user.email=pbrlab@localhost",
+            "-c",
+            "commit.gpgsign=false",
+        ])
+        .args(args)
+        .output()
+        .context("running git (is it installed?)")?;
+    if !out.status.success() {
+        bail!(
+            "git {}: {}",
+            args.join(" "),
+            String::from_utf8_lossy(&out.stderr).trim()
+        );
+    }
+    Ok(out)
+}
+
+/// Makes `dest` a git repository whose first commit, tagged [`TAG`], holds every file in
+/// it (the handout just written).
+pub fn commit(dest: &Path) -> anyhow::Result<()> {
+    git(dest, &["init", "--quiet"])?;
+    git(dest, &["add", "--all"])?;
+    git(dest, &["commit", "--quiet", "-m", "The pbrlab handout"])?;
+    git(dest, &["tag", TAG])?;
+    Ok(())
+}
+
+/// The shipped stub of `task` in the repository at `root`: `exercises/<task>.rs` as
+/// committed at [`TAG`], or at `HEAD` where there is no tag.
+pub fn shipped(root: &Path, task: TaskId) -> anyhow::Result<String> {
+    let tagged = git(
+        root,
+        &[
+            "rev-parse",
+            "--quiet",
+            "--verify",
+            &format!("refs/tags/{TAG}"),
+        ],
+    );
+    let rev = if tagged.is_ok() { TAG } else { "HEAD" };
+    let file = format!("{rev}:exercises/{}.rs", task.name());
+    let out = git(root, &["show", &file])
+        .with_context(|| format!("finding the shipped exercises/{}.rs", task.name()))?;
+    String::from_utf8(out.stdout).context("the shipped stub is not UTF-8")
+}
+
+/// Puts the shipped stub of `task` back in `root`'s `exercises/`, after copying the
+/// student's version into the folder `keep`. Returns where that copy went, or `None` when
+/// the file already was the stub.
+pub fn reset(root: &Path, task: TaskId, keep: &Path) -> anyhow::Result<Option<PathBuf>> {
+    let stub = shipped(root, task)?;
+    let file = root.join("exercises").join(format!("{}.rs", task.name()));
+    let current = std::fs::read_to_string(&file).unwrap_or_default();
+    if current == stub {
+        return Ok(None);
+    }
+    let seconds = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let kept = keep.join(format!("{}-{seconds}.rs", task.name()));
+    crate::atomic_file::write(&kept, current.as_bytes())?;
+    crate::atomic_file::write(&file, stub.as_bytes())?;
+    Ok(Some(kept))
+}
