@@ -180,5 +180,10 @@ fn student_renders_stop_on_unwritten_tasks() {
             !dir.path().join("f.exr").exists(),
             "nothing may be rendered"
         );
+        // What to do next: the reference alone where the build has it, else the tasks left.
+        assert!(
+            stderr.contains("`--impl reference`") || stderr.contains("`pbrlab tasks`"),
+            "{stderr}"
+        );
     }
 }

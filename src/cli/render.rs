@@ -79,9 +79,14 @@ pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
         })
         .collect();
     if !unusable.is_empty() {
+        let what_to_do = if crate::implementation::try_reference().is_some() {
+            "Use `--impl reference` for the reference alone, or `--impl mixed` to take the \
+             reference for those tasks only."
+        } else {
+            "Write those first: `pbrlab tasks` shows what is left, `pbrlab hint TASK` helps."
+        };
         bail!(
-            "{} needs tasks your code cannot run yet:\n  {}\nUse `--impl mixed` to take the \
-             reference for those.",
+            "{} needs tasks your code cannot run yet:\n  {}\n{what_to_do}",
             path.display(),
             unusable.join("\n  ")
         );
