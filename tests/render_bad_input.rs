@@ -346,3 +346,58 @@ fn arbitrary_bytes_never_panic() {
         assert!(load_text(s).is_err(), "{s:?} loaded");
     }
 }
+
+#[test]
+fn shapes_beyond_single_precision_are_refused_before_any_bvh() {
+    let materials = "materials: {m: {diffuse: {albedo: 0.5}}}\n";
+    // A hair ball centred at 3e38 crashed the BVH builder; a fibre radius of 1e8 hung it.
+    for (strands, column) in [
+        (
+            "{ball: {center: [3e38, 0, 0], radius: 0.3, count: 4, length: 0.2, segments: 2}}, radius: 0.01",
+            5,
+        ),
+        (
+            "{ball: {center: [0, 0, 0], radius: 0.3, count: 4, length: 0.2, segments: 2}}, radius: 1e8",
+            5,
+        ),
+    ] {
+        let text = format!(
+            "{CAMERA}{materials}shapes:\n  - fibres: {{strands: {strands}, material: m}}\n"
+        );
+        assert_error_at(&text, 4, column, "must stay within");
+    }
+    let text = format!(
+        "{CAMERA}{materials}shapes:\n  - sphere: {{center: [0, 2e6, 0], radius: 1, material: m}}\n"
+    );
+    assert_error_at(&text, 4, 5, "must stay within");
+    let text = format!(
+        "{CAMERA}{materials}shapes:\n  - box: {{min: [0, 0, 0], max: [1, 1, 1e30], material: m}}\n"
+    );
+    assert_error_at(&text, 4, 5, "must stay within");
+}
+
+#[test]
+fn a_mesh_moved_or_scaled_beyond_single_precision_is_refused() {
+    let dir = scene_dir();
+    std::fs::write(
+        dir.path().join("m.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let scene = dir.path().join("s.yaml");
+    for transform in ["translate: [3e38, 0, 0]", "scale: 1e38"] {
+        let text = format!(
+            "{CAMERA}materials: {{m: {{diffuse: {{albedo: 0.5}}}}}}\nshapes:\n  - mesh: {{file: m.obj, material: m, transform: {{{transform}}}}}\n"
+        );
+        std::fs::write(&scene, text).unwrap();
+        let e = Scene::load(&scene, &LoadOptions::default())
+            .err()
+            .expect("refused");
+        assert_eq!(e.file, scene);
+        assert!(
+            matches!(e.position, Position::LineColumn { line: 4, .. }),
+            "{e}"
+        );
+        assert!(e.message.contains("must stay within"), "{transform}: {e}");
+    }
+}

@@ -98,6 +98,38 @@ struct Builder<'a> {
     warnings: Vec<SceneWarning>,
 }
 
+/// How far from the origin (in any coordinate) a shape may reach, its size included. Rays
+/// are single precision: at 10⁶ a step between two floats is already 0.06 units, and far
+/// beyond it a BVH's bounds overflow (a mesh at 3e38 crashed the builder, a fibre radius of
+/// 1e8 hung it). Scenes are a few units across.
+pub const MAX_REACH: f32 = 1e6;
+
+/// The largest coordinate magnitude of `points` (NaN when one is NaN, so the reach check
+/// refuses it).
+fn farthest<'p>(points: impl Iterator<Item = &'p Vec3>) -> f32 {
+    points.map(|p| p.abs().max_element()).fold(0.0, |a, b| {
+        if a.is_nan() || b.is_nan() {
+            f32::NAN
+        } else {
+            a.max(b)
+        }
+    })
+}
+
+/// True when a shape reaching `reach` from the origin is within [`MAX_REACH`] (false for
+/// NaN).
+fn within_reach(reach: f32) -> bool {
+    (0.0..=MAX_REACH).contains(&reach)
+}
+
+/// The error for a shape that reaches `reach` from the origin.
+fn beyond_reach(reach: f32) -> String {
+    format!(
+        "this shape reaches {reach:e} from the origin; coordinates and sizes must stay within \
+         ±{MAX_REACH:e} (single-precision rays lose their precision beyond): scale the scene down"
+    )
+}
+
 /// The primitives of one [`Geometry`], collected before its BVHs are built.
 #[derive(Default)]
 struct GeometryParts {
@@ -658,6 +690,9 @@ impl Builder<'_> {
         let is_boundary = medium_spec.is_some();
         let mut patches = Vec::new();
         let bounds: (Vec3, Vec3);
+        // How far from the origin the shape reaches, checked against MAX_REACH below before
+        // anything builds a BVH over it.
+        let reach: f32;
         match &spanned.value {
             ShapeSpec::Sphere { center, radius, .. } => {
                 let s = Sphere {
@@ -665,6 +700,7 @@ impl Builder<'_> {
                     radius: radius.0,
                     shape: shape_id,
                 };
+                reach = s.center.abs().max_element() + s.radius;
                 patches.push(Patch::sphere(&s));
                 bounds = (s.center - s.radius, s.center + s.radius);
                 if is_boundary {
@@ -686,6 +722,9 @@ impl Builder<'_> {
                 })?;
                 patches.push(Patch::quad(&q));
                 bounds = (Vec3::ZERO, Vec3::ZERO);
+                let corners =
+                    [0.0, 1.0].map(|a| [0.0, 1.0].map(|b| q.origin + a * q.edge1 + b * q.edge2));
+                reach = farthest(corners.iter().flatten());
                 parts.surfaces.quads.push(q);
             }
             ShapeSpec::Box { min, max, .. } => {
@@ -693,6 +732,7 @@ impl Builder<'_> {
                 if !(lo.cmplt(hi).all()) {
                     return Err(self.error(&at, "a box needs min < max on every axis"));
                 }
+                reach = lo.abs().max(hi.abs()).max_element();
                 for q in box_quads(lo, hi, shape_id) {
                     patches.push(Patch::quad(&q));
                     if is_boundary {
@@ -716,6 +756,12 @@ impl Builder<'_> {
                 let rotation = Quat::from_rotation_z(r.z)
                     * Quat::from_rotation_y(r.y)
                     * Quat::from_rotation_x(r.x);
+                let placed = scale
+                    .max_element()
+                    .max(transform.translate.0.abs().max_element());
+                if !within_reach(placed) {
+                    return Err(self.error(&at, beyond_reach(placed)));
+                }
                 let matrix =
                     Mat4::from_scale_rotation_translation(scale, rotation, transform.translate.0);
                 let path = self.resolve(file, "mesh")?;
@@ -736,6 +782,7 @@ impl Builder<'_> {
                     }
                 }
                 bounds = (lo, hi);
+                reach = lo.abs().max(hi.abs()).max_element();
                 let count = obj.triangles.len();
                 let target = if is_boundary {
                     &mut parts.boundaries
@@ -794,6 +841,7 @@ impl Builder<'_> {
                         )
                     }
                 };
+                reach = farthest(polylines.iter().flatten()) + radius.0;
                 for line in &polylines {
                     for pair in line.windows(2) {
                         parts.surfaces.fibres.push(FibreSegment {
@@ -817,6 +865,9 @@ impl Builder<'_> {
             }
         }
 
+        if !within_reach(reach) {
+            return Err(self.error(&at, beyond_reach(reach)));
+        }
         let eye_inside = match &spanned.value {
             ShapeSpec::Sphere { center, radius, .. } => (eye - center.0).length() < radius.0,
             ShapeSpec::Box { min, max, .. } => eye.cmpgt(min.0).all() && eye.cmplt(max.0).all(),
