@@ -401,3 +401,9 @@ fn a_mesh_moved_or_scaled_beyond_single_precision_is_refused() {
         assert!(e.message.contains("must stay within"), "{transform}: {e}");
     }
 }
+
+#[test]
+fn an_image_too_large_to_render_in_memory_is_refused() {
+    let text = "camera: {eye: [0, 0, 5], target: [0, 0, 0], fov: 40, width: 8192, height: 8192}\nshapes:\n  - sphere: {center: [0, 0, 0], radius: 1}\n";
+    assert_error_at(text, 1, 61, "at most 16777216");
+}

@@ -27,6 +27,10 @@ use std::path::{Path, PathBuf};
 
 /// Largest image width or height.
 pub const MAX_PIXELS_PER_SIDE: u32 = 8192;
+/// Most pixels in an image: 4096 × 4096. A render keeps about 85 bytes per pixel (film
+/// sums and a sampler), so this is about 1.4 GB; 8192 × 8192 took 5–6 GB and over a
+/// minute at one sample per pixel.
+pub const MAX_PIXELS: u64 = 4096 * 4096;
 const MAX_SPP: u32 = 1 << 20;
 const MAX_STRANDS: u32 = 200_000;
 const MAX_STRAND_SEGMENTS: u32 = 64;
@@ -350,6 +354,16 @@ impl Builder<'_> {
         };
         let width = side(&c.width, self.options.width, "width")?;
         let height = side(&c.height, self.options.height, "height")?;
+        let pixels = width as u64 * height as u64;
+        if pixels > MAX_PIXELS {
+            return Err(self.error(
+                &c.width.referenced,
+                format!(
+                    "the image is {width} × {height} = {pixels} pixels; at most {MAX_PIXELS} \
+                     (4096 × 4096, about 1.4 GB while rendering) are allowed"
+                ),
+            ));
+        }
         let (eye, target, up) = (c.eye.value.0, c.target.0, c.up.value.0);
         if (target - eye).length_squared() == 0.0 || !(target - eye).length_squared().is_finite() {
             return Err(self.error(
