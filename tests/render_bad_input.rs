@@ -407,3 +407,29 @@ fn an_image_too_large_to_render_in_memory_is_refused() {
     let text = "camera: {eye: [0, 0, 5], target: [0, 0, 0], fov: 40, width: 8192, height: 8192}\nshapes:\n  - sphere: {center: [0, 0, 0], radius: 1}\n";
     assert_error_at(text, 1, 61, "at most 16777216");
 }
+
+#[test]
+fn obj_face_errors_name_the_line_and_column() {
+    for (obj, line, column, words) in [
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n",
+            4,
+            7,
+            "not one of the 3 vertices",
+        ),
+        ("v 0 0 0\nv 1 0 0\nf 1 2\n", 3, 1, "at least 3 vertices"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 0/2 3\n", 4, 7, "`0`"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", 4, 9, "`-4`"),
+    ] {
+        let e = mesh_scene(obj).err().expect("refused");
+        assert!(e.file.ends_with("m.obj"), "{e}");
+        assert_eq!(
+            e.position,
+            Position::LineColumn { line, column },
+            "{obj}: {e}"
+        );
+        assert!(e.message.contains(words), "{obj}: {e}");
+    }
+    // Relative indices that do name a vertex load.
+    assert!(mesh_scene("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n").is_ok());
+}

@@ -15,22 +15,75 @@ pub struct ObjTriangles {
     pub warning: Option<SceneWarning>,
 }
 
+/// Checks every face line (`f …`) of an OBJ file's `text` before it is parsed, so that a
+/// face with fewer than three vertices or a vertex index that is not a vertex defined
+/// before it is reported at its line and column (the parser reports neither where).
+fn check_faces(path: &Path, text: &str) -> Result<(), SceneError> {
+    let mut vertices: i64 = 0;
+    for (number, line) in text.lines().enumerate() {
+        let line_number = number as u64 + 1;
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => vertices += 1,
+            Some("f") => {
+                let corners: Vec<&str> = words.collect();
+                let column =
+                    |word: &str| (word.as_ptr() as usize - line.as_ptr() as usize) as u64 + 1;
+                let error = |col: u64, message: String| {
+                    Err(SceneError::at(path, text, line_number, col, message))
+                };
+                if corners.len() < 3 {
+                    return error(
+                        1,
+                        format!(
+                            "a face needs at least 3 vertices, this one has {}",
+                            corners.len()
+                        ),
+                    );
+                }
+                for corner in corners {
+                    let index = corner.split('/').next().unwrap_or_default();
+                    let valid = match index.parse::<i64>() {
+                        Ok(i) if i > 0 => i <= vertices,
+                        Ok(i) if i < 0 => -i <= vertices,
+                        _ => false,
+                    };
+                    if !valid {
+                        return error(
+                            column(corner),
+                            format!(
+                                "vertex index `{index}` is not one of the {vertices} vertices \
+                                 defined above this line (indices count from 1, or from -1 \
+                                 backwards)"
+                            ),
+                        );
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 /// Reads the OBJ file at `path` and places it with `transform`. Degenerate triangles are
 /// skipped and counted; a non-finite vertex or an empty result is an error.
 pub fn load_obj(path: &Path, transform: &Mat4) -> Result<ObjTriangles, SceneError> {
-    let file = std::fs::File::open(path)
+    let bytes = std::fs::read(path)
         .map_err(|e| SceneError::file(path, format!("cannot open the mesh: {e}")))?;
+    check_faces(path, &String::from_utf8_lossy(&bytes))?;
     let options = tobj::LoadOptions {
         single_index: true,
         triangulate: false,
         ignore_points: true,
         ignore_lines: true,
     };
-    let (models, _materials) = tobj::load_obj_buf(&mut BufReader::new(file), &options, |_| {
-        // Materials come from the scene file; .mtl files are not read.
-        Err(tobj::LoadError::GenericFailure)
-    })
-    .map_err(|e| SceneError::file(path, format!("not a valid OBJ file: {e}")))?;
+    let (models, _materials) =
+        tobj::load_obj_buf(&mut BufReader::new(&bytes[..]), &options, |_| {
+            // Materials come from the scene file; .mtl files are not read.
+            Err(tobj::LoadError::GenericFailure)
+        })
+        .map_err(|e| SceneError::file(path, format!("not a valid OBJ file: {e}")))?;
 
     let mut triangles = Vec::new();
     let mut degenerate = 0usize;
