@@ -433,3 +433,12 @@ fn obj_face_errors_name_the_line_and_column() {
     // Relative indices that do name a vertex load.
     assert!(mesh_scene("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n").is_ok());
 }
+
+#[test]
+fn a_scene_too_large_for_the_yaml_loader_says_so() {
+    let sphere = "  - sphere: {center: [0, 0, 0], radius: 1}\n";
+    let text = format!("{CAMERA}shapes:\n{}", sphere.repeat(60_000));
+    let e = error_of(&text);
+    assert!(e.message.contains("too large for the loader"), "{e}");
+    assert!(e.message.contains("OBJ"), "{e}");
+}

@@ -84,14 +84,37 @@ pub fn from_yaml(file: &Path, text: &str, options: &LoadOptions) -> Result<Scene
 }
 
 fn yaml_error(file: &Path, text: &str, e: &serde_saphyr::Error) -> SceneError {
-    let message = serde_saphyr::DefaultMessageFormatter
-        .format_message(e.without_snippet())
-        .escape_debug()
-        .to_string();
+    let message = match e.without_snippet() {
+        serde_saphyr::Error::Budget { breach, .. } => too_large(breach),
+        other => serde_saphyr::DefaultMessageFormatter
+            .format_message(other)
+            .escape_debug()
+            .to_string(),
+    };
     match e.location() {
         Some(l) if l.line() > 0 => SceneError::at(file, text, l.line(), l.column(), message),
         _ => SceneError::file(file, message),
     }
+}
+
+/// What a scene file that breaches the YAML loader's limits (set against hostile input:
+/// billions of nodes, deep nesting) is told.
+fn too_large(breach: &serde_saphyr::budget::BudgetBreach) -> String {
+    use serde_saphyr::budget::BudgetBreach;
+    let limits = serde_saphyr::Budget::default();
+    let what = match breach {
+        BudgetBreach::Nodes { .. } => format!(
+            "more than {} values (numbers, strings, lists and maps)",
+            limits.max_nodes
+        ),
+        BudgetBreach::Depth { depth } => format!("lists or maps nested {depth} deep"),
+        BudgetBreach::ScalarBytes { .. } => "more text than the loader reads".into(),
+        other => format!("{other:?}"),
+    };
+    format!(
+        "the scene file is too large for the loader: {what}. Put large geometry in an OBJ \
+         mesh or a strand file and refer to it from the scene"
+    )
 }
 
 struct Builder<'a> {
