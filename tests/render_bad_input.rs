@@ -442,3 +442,11 @@ fn a_scene_too_large_for_the_yaml_loader_says_so() {
     assert!(e.message.contains("too large for the loader"), "{e}");
     assert!(e.message.contains("OBJ"), "{e}");
 }
+
+#[test]
+fn a_quoted_number_is_text_not_a_number() {
+    let text = format!("{CAMERA}shapes:\n  - sphere: {{center: [0, 0, 0], radius: \"0.5\"}}\n");
+    assert_error_at(&text, 3, 41, "without quotes");
+    let text = format!("{CAMERA}shapes:\n  - sphere: {{center: [0, '1', 0], radius: 1}}\n");
+    assert_error_at(&text, 3, 26, "found the text `1`");
+}

@@ -7,9 +7,39 @@ use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use std::fmt;
 
-/// Reads a number as f32, rejecting NaN, infinities and values beyond the f32 range.
+/// Accepts a YAML number only: a quoted `"0.5"` is text, and reading it as a number anyway
+/// would hide a mistake in the file.
+struct NumberVisitor;
+
+impl Visitor<'_> for NumberVisitor {
+    type Value = f64;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a number")
+    }
+
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<f64, E> {
+        Ok(v)
+    }
+
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<f64, E> {
+        Ok(v as f64)
+    }
+
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<f64, E> {
+        Ok(v as f64)
+    }
+
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<f64, E> {
+        Err(E::custom(format!(
+            "expected a number, found the text `{v}` (numbers are written without quotes)"
+        )))
+    }
+}
+
+/// Reads a number as f32, rejecting text, NaN, infinities and values beyond the f32 range.
 fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f32, D::Error> {
-    let v = f64::deserialize(d)?;
+    let v = d.deserialize_any(NumberVisitor)?;
     let v32 = v as f32;
     if !v.is_finite() || !v32.is_finite() {
         return Err(de::Error::custom(format!(
