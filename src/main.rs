@@ -2,17 +2,12 @@
 //! and, in the instructor build, the reference's (`solutions/`), and hands their task
 //! tables to the framework.
 
+mod linked_tables;
+
 use clap::Parser;
-use pbrlab::implementation::{Implementations, install};
 
 fn main() -> std::process::ExitCode {
-    install(Implementations {
-        student: pbrlab_exercises::TASKS,
-        #[cfg(feature = "solutions")]
-        reference: Some(pbrlab_solutions::TASKS),
-        #[cfg(not(feature = "solutions"))]
-        reference: None,
-    });
+    linked_tables::install_linked();
     match pbrlab::cli::run(pbrlab::cli::Cli::parse()) {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(e) => {

@@ -5,15 +5,9 @@
 //! Those are embedded in the framework library and reachable only from the grader's code,
 //! which this `main` never calls, so the linker leaves them out of this file.
 
-use pbrlab::implementation::{Implementations, install};
+mod linked_tables;
 
 fn main() {
-    install(Implementations {
-        student: pbrlab_exercises::TASKS,
-        #[cfg(feature = "solutions")]
-        reference: Some(pbrlab_solutions::TASKS),
-        #[cfg(not(feature = "solutions"))]
-        reference: None,
-    });
+    linked_tables::install_linked();
     pbrlab::grade::worker::serve_production()
 }

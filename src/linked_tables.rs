@@ -1,0 +1,16 @@
+//! The task tables the root package's binaries (`pbrlab`, `pbrlab-worker`) link: the
+//! student's crate, and in the instructor build the reference's. A module of those
+//! binaries (`mod linked_tables;` in each), not of the framework beside it in `src/`.
+
+use pbrlab::implementation::{Implementations, install};
+
+/// Hands the linked tables to the framework; called first thing in `main`.
+pub fn install_linked() {
+    install(Implementations {
+        student: pbrlab_exercises::TASKS,
+        #[cfg(feature = "solutions")]
+        reference: Some(pbrlab_solutions::TASKS),
+        #[cfg(not(feature = "solutions"))]
+        reference: None,
+    });
+}
