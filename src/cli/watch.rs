@@ -34,12 +34,11 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
 }
 
 /// Rebuilds with cargo and regrades with the new binary; the grader's own table is the
-/// output. A build error is shown as cargo prints it, and watching goes on.
+/// output. Cargo's progress and any build error are shown as cargo prints them, and
+/// watching goes on.
 fn regrade(root: &Path, tasks: &[String]) -> anyhow::Result<()> {
     let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    cargo
-        .current_dir(root)
-        .args(["run", "--release", "--quiet"]);
+    cargo.current_dir(root).args(["run", "--release"]);
     if !cfg!(feature = "solutions") {
         cargo.arg("--no-default-features");
     }
@@ -72,7 +71,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             // Editors often write a file in several steps; let the save settle.
             std::thread::sleep(poll);
             seen = snapshot(&exercises);
+            // Clear the screen now: unflushed, the escape went out after the new table and
+            // erased it.
             print!("\x1b[2J\x1b[H");
+            println!("{} changed: rebuilding and regrading…", exercises.display());
+            std::io::Write::flush(&mut std::io::stdout())?;
             regrade(root, &args.tasks)?;
             println!(
                 "\nWatching {} — save a file to regrade, Ctrl-C to stop.",
