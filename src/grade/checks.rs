@@ -293,21 +293,17 @@ fn judge_all(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<(CheckResult, 
         .map_or(&[][..], |d| d.sampling.as_slice());
     let alpha = statistical_alpha(task, sampling.len(), t);
     let mut judged: Vec<(CheckResult, bool)> = Vec::new();
-    for calls in input.for_worker().values {
-        let Some((cases, visibility)) = input.value_cases(&calls.check) else {
+    for check in [VALUES, HIDDEN_VALUES] {
+        let Some((cases, visibility)) = input.value_cases(check).filter(|(c, _)| !c.is_empty())
+        else {
             continue;
         };
-        judged.push(from_raw(
-            raw,
-            &calls.check,
-            CheckKind::Values,
-            |r| match r {
-                Raw::Values(outputs) if outputs.check == calls.check => {
-                    Some(values::judge(cases, outputs, visibility))
-                }
-                _ => None,
-            },
-        ));
+        judged.push(from_raw(raw, check, CheckKind::Values, |r| match r {
+            Raw::Values(outputs) if outputs.check == check => {
+                Some(values::judge(cases, outputs, visibility))
+            }
+            _ => None,
+        }));
     }
     for (index, case) in sampling.iter().enumerate() {
         let name = format!("sampling: {}", case.call);
