@@ -2,6 +2,11 @@
 //! the student's crate at compile time. Framework-owned, like `lib.rs` and `Cargo.toml`: the
 //! grader builds the exercise files with its own copy.
 //!
+//! It also writes the list of task modules that `lib.rs` includes, each compiled from
+//! `exercises/<task>.rs`, or from the folder named by `PBRLAB_EXERCISES` (a submission's
+//! copy), and from the shipped stub in the folder named by `PBRLAB_STUBS` for a task whose
+//! file the grader found not to compile (`pbrlab::grade::build`).
+//!
 //! The rules, and why each one is needed beyond what the compiler already refuses:
 //! - no `#[path]` (a module compiled from another file, e.g. `solutions/…`), no
 //!   `include!`, `include_str!`, `include_bytes!` (a file's contents), no `env!` or
@@ -20,7 +25,6 @@
 //! a doc comment may of course mention any of these words in its text).
 
 use proc_macro2::{TokenStream, TokenTree};
-use std::path::Path;
 
 /// Identifiers no exercise file may contain, with what each could do.
 const REFUSED: &[(&str, &str)] = &[
@@ -41,21 +45,62 @@ const REFUSED: &[(&str, &str)] = &[
     ("naked_asm", "inline assembly"),
 ];
 
+/// The task files, one module each (the framework's task table names them).
+const TASKS: [&str; 15] = [
+    "reflect",
+    "refract_stack",
+    "fresnel_schlick",
+    "cosine_sample",
+    "smith_g1",
+    "beckmann_ndf",
+    "cook_torrance",
+    "ndf_sample",
+    "aniso_ndf",
+    "phong",
+    "brdf_check",
+    "kajiya_kay",
+    "path_trace",
+    "mis",
+    "delta_tracking",
+];
+
+/// The folder of the exercise files to compile, when not this one (the grader builds a
+/// submission from its own copy).
+const EXERCISES: &str = "PBRLAB_EXERCISES";
+
+/// A folder of shipped stubs that stand in for the exercise files of the same name (the
+/// grader's fallback for a task that does not compile).
+const STUBS: &str = "PBRLAB_STUBS";
+
 fn main() {
-    println!("cargo::rerun-if-changed=.");
-    let mut files: Vec<_> = std::fs::read_dir(".")
-        .expect("the exercises folder is readable")
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
-        .filter(|p| !p.ends_with("lib.rs") && !p.ends_with("build.rs"))
-        .collect();
-    files.sort();
+    println!("cargo::rerun-if-env-changed={EXERCISES}");
+    println!("cargo::rerun-if-env-changed={STUBS}");
+    let own = std::env::current_dir().expect("the build script runs in exercises/");
+    let exercises = std::env::var_os(EXERCISES).map_or_else(|| own.clone(), Into::into);
+    let stubs = std::env::var_os(STUBS).map(std::path::PathBuf::from);
+    println!("cargo::rerun-if-changed={}", exercises.display());
+    if let Some(stubs) = &stubs {
+        println!("cargo::rerun-if-changed={}", stubs.display());
+    }
+    let mut modules = String::new();
     let mut refused = 0;
-    for file in files {
-        let name = Path::new("exercises").join(file.file_name().unwrap_or_default());
-        println!("cargo::rerun-if-changed={}", file.display());
-        let Ok(text) = std::fs::read_to_string(&file) else {
+    for task in TASKS {
+        let file = format!("{task}.rs");
+        let stub = stubs
+            .as_ref()
+            .map(|s| s.join(&file))
+            .filter(|s| s.is_file());
+        let source = stub.clone().unwrap_or_else(|| exercises.join(&file));
+        println!("cargo::rerun-if-changed={}", source.display());
+        modules.push_str(&format!(
+            "#[path = {:?}]\npub mod {task};\n",
+            source.display().to_string()
+        ));
+        if stub.is_some() {
+            // The shipped stub: the framework's text, not the student's.
+            continue;
+        }
+        let Ok(text) = std::fs::read_to_string(&source) else {
             continue;
         };
         // A file that does not lex is left to the compiler, whose message is better.
@@ -64,8 +109,7 @@ fn main() {
         };
         for (line, column, why) in findings(tokens) {
             println!(
-                "cargo::error={}:{line}:{column}: not allowed in an exercise file: {why}",
-                name.display()
+                "cargo::error=exercises/{file}:{line}:{column}: not allowed in an exercise file: {why}"
             );
             refused += 1;
         }
@@ -76,6 +120,8 @@ fn main() {
              API (crate::prelude and the modules it names)"
         );
     }
+    let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    std::fs::write(out.join("tasks.rs"), modules).expect("OUT_DIR is writable");
 }
 
 /// Every refused construct in `tokens`: line, column and the reason.

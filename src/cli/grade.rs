@@ -3,6 +3,7 @@ use crate::grade::history;
 use crate::grade::isolation::Launcher;
 use crate::grade::report::{self, Format};
 use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
+use crate::grade::student_build::BuildRecord;
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
@@ -82,6 +83,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         options.jobs = jobs.max(1);
     }
     let launcher = Launcher::current_exe()?;
+    if let Some(record) = BuildRecord::of(&launcher.program) {
+        options.compile_errors = record.errors();
+    }
     if let Some(runs) = args.repeat {
         let calibration = calibration::repeat(&options, &launcher, runs)?;
         return emit(&calibration.text(), args.output.as_ref());

@@ -4,12 +4,20 @@
 //! the code for the grader) and, when an exercise is newer or the worker is missing,
 //! rebuilds both with cargo
 //! (only the student's crate and the link: about a second), compiler messages shown as
-//! cargo prints them, and runs the command again in the new binary.
+//! cargo prints them, and runs the command again in the new binary. An exercise file that
+//! does not compile is built from its shipped stub ([`crate::grade::student_build`]): the
+//! other tasks still grade and render, and the grade reports the compiler's message on it.
 
-use anyhow::{Context, bail};
+use crate::grade::isolation::{WORKER_BINARY, worker_beside};
+use crate::grade::student_build::{BuildRecord, StudentBuild};
+use anyhow::Context;
 use std::path::Path;
 use std::process::Command;
-use std::time::SystemTime;
+use std::time::{Duration, SystemTime};
+
+/// How long a rebuild may take (the framework is built already: the student's crate and a
+/// link take seconds).
+const BUILD_DEADLINE: Duration = Duration::from_secs(600);
 
 /// Set in the environment of the re-run, so a rebuild that does not refresh the binary
 /// cannot loop.
@@ -38,33 +46,33 @@ pub fn ensure_current() -> anyhow::Result<()> {
     let exe = std::env::current_exe().context("locating this binary")?;
     // The worker binary runs the student's code: it must be current too (`cargo run`
     // builds only this one).
-    let worker = exe.with_file_name(format!(
-        "{}{}",
-        crate::grade::isolation::WORKER_BINARY,
-        std::env::consts::EXE_SUFFIX
-    ));
+    let worker = worker_beside(&exe);
     let built = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified());
-    if [&exe, &worker]
-        .iter()
-        .all(|file| built(file).is_ok_and(|b| b >= source))
+    // A build from another folder (`grade-class` builds each submission here) is not the
+    // student's.
+    let elsewhere = BuildRecord::of(&worker).is_some_and(|r| {
+        r.exercises.canonicalize().ok() != root.join("exercises").canonicalize().ok()
+    });
+    if !elsewhere
+        && [&exe, &worker]
+            .iter()
+            .all(|file| built(file).is_ok_and(|b| b >= source))
     {
         return Ok(());
     }
     eprintln!("rebuilding: exercises/ is newer than the binaries (or pbrlab-worker is missing)");
-    let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    cargo
-        .current_dir(root)
-        .args(["build", "--release", "--bin", "pbrlab", "--bin"])
-        .arg(crate::grade::isolation::WORKER_BINARY);
-    if !cfg!(feature = "solutions") {
-        cargo.arg("--no-default-features");
+    let stub = |task| crate::handout::stubs::shipped(root, task);
+    StudentBuild {
+        root,
+        exercises: &root.join("exercises"),
+        bins: &["pbrlab", WORKER_BINARY],
+        handout: !cfg!(feature = "solutions"),
+        stub: &stub,
+        echo: true,
+        deadline: BUILD_DEADLINE,
     }
-    let status = cargo
-        .status()
-        .context("running cargo to rebuild (is it on PATH?)")?;
-    if !status.success() {
-        bail!("the build failed: fix the error above and run the command again");
-    }
+    .run()
+    .context("fix the error above and run the command again")?;
     let err = exec_again(&exe);
     Err(err).context(format!("running the rebuilt {}", exe.display()))
 }

@@ -33,19 +33,18 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
     times
 }
 
-/// Rebuilds with cargo and regrades with the new binary; the grader's own table is the
-/// output. Cargo's progress and any build error are shown as cargo prints them, and
-/// watching goes on.
-fn regrade(root: &Path, tasks: &[String]) -> anyhow::Result<()> {
-    let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    cargo.current_dir(root).args(["run", "--release"]);
-    if !cfg!(feature = "solutions") {
-        cargo.arg("--no-default-features");
-    }
-    cargo.args(["--", "grade"]).args(tasks);
-    let status = cargo.status().context("running cargo")?;
+/// Regrades in a new process of this binary, whose first step rebuilds the student's crate
+/// (`rebuild::ensure_current`: cargo's progress and the compiler's messages shown as they
+/// come, a task that does not compile built from its stub); the grader's own table is the
+/// output, and watching goes on whatever happens.
+fn regrade(exe: &Path, tasks: &[String]) -> anyhow::Result<()> {
+    let status = Command::new(exe)
+        .arg("grade")
+        .args(tasks)
+        .status()
+        .with_context(|| format!("running {}", exe.display()))?;
     if !status.success() {
-        eprintln!("(not graded: fix the build error above and save again)");
+        eprintln!("(not graded: fix the error above and save again)");
     }
     Ok(())
 }
@@ -57,9 +56,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !exercises.is_dir() {
         bail!("no exercises/ directory in {}", root.display());
     }
+    // Taken once: after a rebuild replaces the file, this process's own path names the
+    // deleted one.
+    let exe = std::env::current_exe().context("locating this binary")?;
     let poll = Duration::from_millis(args.poll_ms.max(50));
     let mut seen = snapshot(&exercises);
-    regrade(root, &args.tasks)?;
+    regrade(&exe, &args.tasks)?;
     println!(
         "\nWatching {} — save a file to regrade, Ctrl-C to stop.",
         exercises.display()
@@ -76,7 +78,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             print!("\x1b[2J\x1b[H");
             println!("{} changed: rebuilding and regrading…", exercises.display());
             std::io::Write::flush(&mut std::io::stdout())?;
-            regrade(root, &args.tasks)?;
+            regrade(&exe, &args.tasks)?;
             println!(
                 "\nWatching {} — save a file to regrade, Ctrl-C to stop.",
                 exercises.display()

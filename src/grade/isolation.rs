@@ -19,6 +19,11 @@ use std::time::{Duration, Instant};
 /// The name of the binary that runs student code for the grader (`src/worker_main.rs`).
 pub const WORKER_BINARY: &str = "pbrlab-worker";
 
+/// The worker binary built beside the binary `exe`.
+pub fn worker_beside(exe: &Path) -> PathBuf {
+    exe.with_file_name(format!("{WORKER_BINARY}{}", std::env::consts::EXE_SUFFIX))
+}
+
 /// Threads a worker's renders may use.
 pub const WORKER_THREADS: usize = 2;
 
@@ -39,9 +44,7 @@ impl Launcher {
     /// or reference renders (nothing reachable from its `main` uses them, so the linker
     /// leaves them out: `tests/instructor_hostile.rs` checks the file).
     pub fn current_exe() -> anyhow::Result<Self> {
-        let own = std::env::current_exe()?;
-        let program =
-            own.with_file_name(format!("{WORKER_BINARY}{}", std::env::consts::EXE_SUFFIX));
+        let program = worker_beside(&std::env::current_exe()?);
         anyhow::ensure!(
             program.is_file(),
             "the worker binary {} is missing: build it with `cargo build --release`",

@@ -40,6 +40,7 @@ pub mod sandbox;
 pub mod scene_gate;
 pub mod stability;
 pub mod stats;
+pub mod student_build;
 pub mod test_brdf;
 pub mod tolerance;
 pub mod values;

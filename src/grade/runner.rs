@@ -38,6 +38,9 @@ pub struct GradeOptions {
     pub renders: bool,
     /// Where the HTML report goes (render checks write their pictures there).
     pub report_dir: Option<std::path::PathBuf>,
+    /// The tasks whose exercise files did not compile, with the compiler's messages
+    /// ([`super::student_build`]): each is reported as a compile error, without a worker.
+    pub compile_errors: BTreeMap<TaskId, String>,
 }
 
 impl Default for GradeOptions {
@@ -52,6 +55,7 @@ impl Default for GradeOptions {
             jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
             renders: true,
             report_dir: None,
+            compile_errors: BTreeMap::new(),
         }
     }
 }
@@ -231,6 +235,10 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
     let mut outcomes = Vec::new();
     for &task in &options.tasks {
         let input = inputs.remove(&task).unwrap_or_default();
+        if let Some(message) = options.compile_errors.get(&task) {
+            outcomes.push((task.name().to_string(), compile_error(task, message)));
+            continue;
+        }
         if !task_has_checks(task, &input) {
             // Reported without starting a worker.
             outcomes.push((task.name().to_string(), no_checks(task)));
@@ -274,6 +282,20 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
     );
     report.sandbox = sandbox.into_iter().collect();
     Ok(report)
+}
+
+fn compile_error(task: TaskId, message: &str) -> TaskOutcome {
+    TaskOutcome {
+        task: task.name().into(),
+        status: TaskStatus::CompileError {
+            message: message.into(),
+        },
+        points: 0.0,
+        max_points: task.info().points as f64,
+        checks: Vec::new(),
+        output: String::new(),
+        seconds: 0.0,
+    }
 }
 
 fn no_checks(task: TaskId) -> TaskOutcome {

@@ -187,6 +187,12 @@ pub enum TaskStatus {
         /// What happened, in words (timeout, stack overflow, out of memory, …).
         reason: String,
     },
+    /// The task's file did not compile; its shipped stub was built in its place, so the
+    /// other tasks could be graded. The task scores 0.
+    CompileError {
+        /// The compiler's messages.
+        message: String,
+    },
     /// The task has no checks yet (its code arrives with the renderer).
     NoChecks,
     /// The grader itself failed on this task (not the student's code); grade again.
@@ -205,6 +211,7 @@ impl TaskStatus {
             TaskStatus::NotAttempted => "not attempted".into(),
             TaskStatus::NeedsTask { task } => format!("needs {task}"),
             TaskStatus::Crashed { .. } => "CRASHED".into(),
+            TaskStatus::CompileError { .. } => "COMPILE ERROR".into(),
             TaskStatus::NoChecks => "no checks yet".into(),
             TaskStatus::GraderError { .. } => "GRADER ERROR".into(),
         }

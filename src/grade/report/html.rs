@@ -137,6 +137,15 @@ pub fn page(report: &GradeReport) -> String {
         if let TaskStatus::Crashed { reason } = &t.status {
             let _ = write!(s, "<p class=\"failed\">The code {}.</p>", escape(reason));
         }
+        if let TaskStatus::CompileError { message } = &t.status {
+            let _ = write!(
+                s,
+                "<p class=\"failed\">exercises/{}.rs does not compile; its stub was graded.</p>\
+                 <pre>{}</pre>",
+                t.task,
+                escape(message)
+            );
+        }
         for c in &t.checks {
             s += &check_html(c);
         }

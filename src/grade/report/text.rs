@@ -88,6 +88,17 @@ pub fn details(t: &TaskOutcome) -> String {
                 "  the grader failed here, not your code ({message}); grade again"
             );
         }
+        TaskStatus::CompileError { message } => {
+            let _ = writeln!(
+                s,
+                "  exercises/{}.rs does not compile (the other tasks were graded as \
+                 written):",
+                t.task
+            );
+            for line in message.lines() {
+                let _ = writeln!(s, "    {line}");
+            }
+        }
         TaskStatus::NeedsTask { task } if t.task.starts_with("scene: ") => {
             let _ = writeln!(s, "  the render is graded once these tasks pass: {task}");
         }

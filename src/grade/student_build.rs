@@ -1,0 +1,440 @@
+//! Building the student's crate so that a compile error costs only its task: cargo builds
+//! the binaries, the compiler's JSON diagnostics (and the exercise build script's refusals)
+//! name the exercise files at fault, the shipped stub stands in for each of those, and the
+//! build runs again until it succeeds. The tasks built from their stubs are recorded beside
+//! the binaries ([`BuildRecord`]); the grader reports each as a compile error with the
+//! compiler's message, and grades every other task as written.
+
+use crate::worksheet::TaskId;
+use anyhow::{Context, bail};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// The file, beside the binaries, that says what they were built from.
+pub const RECORD: &str = "pbrlab-build.json";
+
+/// The longest compiler message kept per task, in bytes.
+const MAX_MESSAGE: usize = 8 << 10;
+
+/// What a build of the student's crate compiled.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct BuildRecord {
+    /// The folder the exercise files were compiled from.
+    pub exercises: PathBuf,
+    /// The tasks whose files did not compile, each with the compiler's messages: their
+    /// shipped stubs were built in their place.
+    pub compile_errors: BTreeMap<String, String>,
+    /// The worker binary's modification time when the record was written, in nanoseconds
+    /// since the Unix epoch: a binary rebuilt since (by plain cargo) has no record.
+    pub worker_modified: u128,
+}
+
+fn modified_nanos(file: &Path) -> Option<u128> {
+    let time = std::fs::metadata(file).and_then(|m| m.modified()).ok()?;
+    Some(time.duration_since(std::time::UNIX_EPOCH).ok()?.as_nanos())
+}
+
+impl BuildRecord {
+    /// The record of the build that produced `worker`, if the binary is still that build's.
+    pub fn of(worker: &Path) -> Option<Self> {
+        let text = std::fs::read_to_string(worker.with_file_name(RECORD)).ok()?;
+        let record: Self = serde_json::from_str(&text).ok()?;
+        (Some(record.worker_modified) == modified_nanos(worker)).then_some(record)
+    }
+
+    /// The compile errors by task.
+    pub fn errors(&self) -> BTreeMap<TaskId, String> {
+        self.compile_errors
+            .iter()
+            .filter_map(|(task, message)| Some((TaskId::parse(task).ok()?, message.clone())))
+            .collect()
+    }
+}
+
+/// A build of the student's crate.
+pub struct StudentBuild<'a> {
+    /// The workspace root (where `Cargo.toml` is).
+    pub root: &'a Path,
+    /// The folder of the exercise files to compile (`exercises/`, or a submission's copy).
+    pub exercises: &'a Path,
+    /// The binaries to build (`pbrlab-worker`, and `pbrlab` for a local rebuild).
+    pub bins: &'a [&'a str],
+    /// Build without the reference (the student handout).
+    pub handout: bool,
+    /// The shipped stub of a task.
+    pub stub: &'a dyn Fn(TaskId) -> anyhow::Result<String>,
+    /// Print cargo's progress and the compiler's messages as they come.
+    pub echo: bool,
+    /// How long all rounds of the build may take.
+    pub deadline: Duration,
+}
+
+/// Where the stand-in stubs of a build from `exercises` go: beside it, in `.pbrlab/`.
+fn stub_folder(exercises: &Path) -> PathBuf {
+    exercises
+        .parent()
+        .unwrap_or(exercises)
+        .join(".pbrlab")
+        .join("stubbed")
+}
+
+/// What one round of cargo reported.
+struct Round {
+    success: bool,
+    /// Per exercise file at fault, its messages.
+    blamed: BTreeMap<TaskId, String>,
+    /// Every error message, for a failure that names no exercise file.
+    errors: Vec<String>,
+    /// The worker binary cargo produced.
+    worker: Option<PathBuf>,
+}
+
+impl StudentBuild<'_> {
+    /// Builds, putting the stub back for every task whose file does not compile, and writes
+    /// the record beside the worker binary. Fails when the build fails outside the
+    /// exercise files, or when the deadline passes.
+    pub fn run(&self) -> anyhow::Result<BuildRecord> {
+        let start = Instant::now();
+        let stubs = stub_folder(self.exercises);
+        let mut errors: BTreeMap<TaskId, String> = BTreeMap::new();
+        loop {
+            self.place_stubs(&stubs, &errors)?;
+            let left = self.deadline.saturating_sub(start.elapsed());
+            let round = self.cargo(&stubs, !errors.is_empty(), left)?;
+            if round.success {
+                let worker = round
+                    .worker
+                    .context("cargo did not report the worker binary it built")?;
+                let record = BuildRecord {
+                    exercises: self.exercises.to_path_buf(),
+                    compile_errors: errors
+                        .into_iter()
+                        .map(|(t, m)| (t.name().to_string(), m))
+                        .collect(),
+                    worker_modified: modified_nanos(&worker).unwrap_or(0),
+                };
+                let json = serde_json::to_string_pretty(&record)?;
+                crate::atomic_file::write(&worker.with_file_name(RECORD), json.as_bytes())?;
+                return Ok(record);
+            }
+            let new: Vec<_> = round
+                .blamed
+                .into_iter()
+                .filter(|(task, _)| !errors.contains_key(task))
+                .collect();
+            if new.is_empty() {
+                bail!(
+                    "the build failed outside the exercise files:\n{}",
+                    round.errors.join("\n")
+                );
+            }
+            if self.echo {
+                let names: Vec<_> = new
+                    .iter()
+                    .map(|(t, _)| format!("{}.rs", t.name()))
+                    .collect();
+                eprintln!(
+                    "pbrlab: {} does not compile; building its shipped stub in its place (0 \
+                     points for that task), the rest as written",
+                    names.join(", ")
+                );
+            }
+            errors.extend(new);
+        }
+    }
+
+    /// Makes `folder` hold exactly the stubs of the tasks in `errors`.
+    fn place_stubs(&self, folder: &Path, errors: &BTreeMap<TaskId, String>) -> anyhow::Result<()> {
+        if folder.exists() {
+            std::fs::remove_dir_all(folder)
+                .with_context(|| format!("clearing {}", folder.display()))?;
+        }
+        if errors.is_empty() {
+            return Ok(());
+        }
+        std::fs::create_dir_all(folder).with_context(|| format!("making {}", folder.display()))?;
+        for &task in errors.keys() {
+            let text = (self.stub)(task)?;
+            let file = folder.join(format!("{}.rs", task.name()));
+            std::fs::write(&file, text).with_context(|| format!("writing {}", file.display()))?;
+        }
+        Ok(())
+    }
+
+    /// Runs cargo once, reading its JSON messages.
+    fn cargo(&self, stubs: &Path, stubbed: bool, left: Duration) -> anyhow::Result<Round> {
+        let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+        cargo
+            .current_dir(self.root)
+            .args(["build", "--release", "--message-format=json"])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped());
+        for bin in self.bins {
+            cargo.args(["--bin", bin]);
+        }
+        if self.handout {
+            cargo.arg("--no-default-features");
+        }
+        // Unset, the build script compiles exercises/ as it is: plain cargo builds and this
+        // one then agree, and neither rebuilds after the other.
+        let own = self.root.join("exercises");
+        if same_folder(self.exercises, &own) {
+            cargo.env_remove("PBRLAB_EXERCISES");
+        } else {
+            cargo.env("PBRLAB_EXERCISES", self.exercises);
+        }
+        if stubbed {
+            cargo.env("PBRLAB_STUBS", stubs);
+        } else {
+            cargo.env_remove("PBRLAB_STUBS");
+        }
+        let mut child = cargo
+            .spawn()
+            .context("running cargo to build the exercises (is it on PATH?)")?;
+        let stderr = child.stderr.take().context("cargo's stderr")?;
+        let echo = self.echo;
+        let side = std::thread::spawn(move || {
+            let mut lines = Vec::new();
+            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
+                if echo {
+                    eprintln!("{line}");
+                }
+                lines.push(line);
+            }
+            lines
+        });
+        let stdout = child.stdout.take().context("cargo's stdout")?;
+        let (tx, rx) = std::sync::mpsc::channel();
+        let exercises = self.exercises.to_path_buf();
+        std::thread::spawn(move || {
+            let mut round = Round {
+                success: false,
+                blamed: BTreeMap::new(),
+                errors: Vec::new(),
+                worker: None,
+            };
+            for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+                read_message(&line, &exercises, echo, &mut round);
+            }
+            let _ = tx.send(round);
+        });
+        let mut round = match rx.recv_timeout(left) {
+            Ok(round) => round,
+            Err(_) => {
+                let _ = child.kill();
+                let _ = child.wait();
+                bail!(
+                    "the build did not finish within {} s",
+                    self.deadline.as_secs()
+                );
+            }
+        };
+        let status = child.wait().context("waiting for cargo")?;
+        round.success = round.success && status.success();
+        for line in side.join().unwrap_or_default() {
+            // The exercise build script's refusals: `exercises/<task>.rs:line:col: …`.
+            if let Some(task) = refused_task(&line) {
+                add_message(round.blamed.entry(task).or_default(), &line);
+            }
+            if line.trim_start().starts_with("error") {
+                round.errors.push(line);
+            }
+        }
+        Ok(round)
+    }
+}
+
+fn same_folder(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => a == b,
+    }
+}
+
+fn add_message(to: &mut String, message: &str) {
+    if to.len() + message.len() <= MAX_MESSAGE {
+        if !to.is_empty() {
+            to.push('\n');
+        }
+        to.push_str(message.trim_end());
+    }
+}
+
+/// The task of a build-script refusal line, which names `exercises/<task>.rs`.
+fn refused_task(line: &str) -> Option<TaskId> {
+    let (_, rest) = line.split_once("exercises/")?;
+    let (stem, _) = rest.split_once(".rs:")?;
+    TaskId::parse(stem).ok().filter(|t| t.name() == stem)
+}
+
+/// The task whose exercise file is `file` (as the compiler names it), if any.
+fn task_of(file: &str, exercises: &Path) -> Option<TaskId> {
+    let path = Path::new(file);
+    let stem = path.file_stem()?.to_str()?;
+    let task = TaskId::parse(stem).ok().filter(|t| t.name() == stem)?;
+    let parent = path.parent()?;
+    let parent = if parent.is_relative() {
+        // Relative to the workspace root: `exercises/<task>.rs`.
+        exercises.parent().unwrap_or(exercises).join(parent)
+    } else {
+        parent.to_path_buf()
+    };
+    same_folder(&parent, exercises).then_some(task)
+}
+
+/// Every file a diagnostic points at, its children's included.
+fn files_of(message: &serde_json::Value, into: &mut Vec<String>) {
+    for span in message["spans"].as_array().into_iter().flatten() {
+        if let Some(file) = span["file_name"].as_str() {
+            into.push(file.to_string());
+        }
+        let mut expansion = &span["expansion"];
+        while let Some(site) = expansion.get("span") {
+            if let Some(file) = site["file_name"].as_str() {
+                into.push(file.to_string());
+            }
+            expansion = &site["expansion"];
+        }
+    }
+    for child in message["children"].as_array().into_iter().flatten() {
+        files_of(child, into);
+    }
+}
+
+/// Reads one line of cargo's JSON output into `round`.
+fn read_message(line: &str, exercises: &Path, echo: bool, round: &mut Round) {
+    let Ok(value) = serde_json::from_str::<serde_json::Value>(line) else {
+        return;
+    };
+    match value["reason"].as_str() {
+        Some("compiler-message") => {
+            let message = &value["message"];
+            let rendered = message["rendered"].as_str().unwrap_or_default();
+            let shown = rendered.replace(&format!("{}/", exercises.display()), "exercises/");
+            if echo {
+                eprint!("{shown}");
+            }
+            if message["level"].as_str() != Some("error") {
+                return;
+            }
+            round.errors.push(shown.clone());
+            let mut files = Vec::new();
+            files_of(message, &mut files);
+            let mut tasks: Vec<_> = files.iter().filter_map(|f| task_of(f, exercises)).collect();
+            // A function whose signature is not the task's is found where `lib.rs` builds
+            // the task table; the message names the function's type, `{reflect::reflect}`.
+            tasks.extend(
+                TaskId::ALL
+                    .into_iter()
+                    .filter(|t| rendered.contains(&format!("{{{}::", t.name()))),
+            );
+            tasks.sort();
+            tasks.dedup();
+            for task in tasks {
+                add_message(round.blamed.entry(task).or_default(), &shown);
+            }
+        }
+        Some("compiler-artifact")
+            if value["target"]["name"].as_str() == Some(super::isolation::WORKER_BINARY) =>
+        {
+            round.worker = value["executable"].as_str().map(PathBuf::from);
+        }
+        Some("build-finished") => round.success = value["success"].as_bool() == Some(true),
+        _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_refusal_line_names_its_task() {
+        let line = "error: pbrlab-exercises@0.1.0: exercises/smith_g1.rs:4:9: not allowed";
+        assert_eq!(refused_task(line), Some(TaskId::SmithG1));
+        assert_eq!(refused_task("error: exercises/lib.rs:1:1: x"), None);
+        assert_eq!(refused_task("error: could not compile"), None);
+    }
+
+    #[test]
+    fn a_diagnostic_is_charged_to_the_exercise_files_it_points_at() {
+        let dir = tempfile::tempdir().unwrap();
+        let exercises = dir.path().join("exercises");
+        std::fs::create_dir(&exercises).unwrap();
+        let file = exercises.join("mis.rs");
+        let line = serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "rendered": format!("error: expected `;`\n --> {}:3:5\n", file.display()),
+                "spans": [{"file_name": exercises.join("lib.rs").display().to_string(),
+                           "expansion": {"span": {"file_name": file.display().to_string()}}}],
+                "children": [{"spans": [{"file_name": "src/integrator/mis.rs"}]}]
+            }
+        });
+        let mut round = Round {
+            success: false,
+            blamed: BTreeMap::new(),
+            errors: Vec::new(),
+            worker: None,
+        };
+        read_message(&line.to_string(), &exercises, false, &mut round);
+        assert_eq!(
+            round.blamed.keys().copied().collect::<Vec<_>>(),
+            [TaskId::Mis]
+        );
+        let signature = serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "rendered": "error[E0308]: mismatched types\n --> exercises/lib.rs:31:48\n                              = note: found fn item `fn(Vec3) -> Vec3 {reflect::reflect}`",
+                "spans": [{"file_name": "exercises/lib.rs"}],
+            }
+        });
+        read_message(&signature.to_string(), &exercises, false, &mut round);
+        assert_eq!(
+            round.blamed.keys().copied().collect::<Vec<_>>(),
+            [TaskId::Reflect, TaskId::Mis],
+            "a signature that is not the task's is charged to the task"
+        );
+        assert!(
+            round.blamed[&TaskId::Mis].contains("--> exercises/mis.rs:3:5"),
+            "the message names the file as the student knows it: {:?}",
+            round.blamed
+        );
+    }
+
+    #[test]
+    fn a_record_of_another_binary_is_ignored() {
+        let dir = tempfile::tempdir().unwrap();
+        let worker = dir.path().join("pbrlab-worker");
+        std::fs::write(&worker, "old").unwrap();
+        let record = BuildRecord {
+            exercises: dir.path().into(),
+            compile_errors: [("reflect".to_string(), "error".to_string())].into(),
+            worker_modified: modified_nanos(&worker).unwrap(),
+        };
+        std::fs::write(
+            worker.with_file_name(RECORD),
+            serde_json::to_string(&record).unwrap(),
+        )
+        .unwrap();
+        assert_eq!(BuildRecord::of(&worker), Some(record.clone()));
+        assert_eq!(
+            record.errors().keys().copied().collect::<Vec<_>>(),
+            [TaskId::Reflect]
+        );
+        let later = std::time::SystemTime::now() + Duration::from_secs(5);
+        std::fs::File::options()
+            .write(true)
+            .open(&worker)
+            .unwrap()
+            .set_modified(later)
+            .unwrap();
+        assert_eq!(BuildRecord::of(&worker), None, "rebuilt since: no record");
+    }
+}
