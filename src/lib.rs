@@ -58,6 +58,7 @@
 //! [`task_table!`]: crate::task_table
 
 pub mod atomic_file;
+pub mod autograder;
 pub mod bsdf;
 pub mod cli;
 pub mod converge;

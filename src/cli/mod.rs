@@ -1,7 +1,9 @@
 //! The `pbrlab` command line: one file per subcommand.
 
+mod autograder;
 mod converge;
 mod grade;
+mod grade_class;
 mod handout;
 mod hint;
 mod needs;
@@ -32,6 +34,12 @@ pub enum Command {
     Hint(hint::Args),
     /// Grade your tasks (or the reference) and print a report.
     Grade(grade::Args),
+    /// Grade every submission in a folder (a subfolder or zip per student): CSV and summary.
+    #[command(hide = !cfg!(feature = "solutions"))]
+    GradeClass(grade_class::Args),
+    /// Write a Gradescope or PrairieLearn autograder package.
+    #[command(hide = !cfg!(feature = "solutions"))]
+    Autograder(autograder::Args),
     /// Regrade every time you save a file in exercises/.
     Watch(watch::Args),
     /// Put the shipped stub of a task back (your version is kept in .pbrlab/reset/).
@@ -71,6 +79,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Tasks(args)) => tasks::run(args),
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Grade(args)) => grade::run(args),
+        Some(Command::GradeClass(args)) => grade_class::run(args),
+        Some(Command::Autograder(args)) => autograder::run(args),
         Some(Command::Watch(args)) => watch::run(args),
         Some(Command::Reset(args)) => reset::run(args),
         Some(Command::Handout(args)) => handout::run(args),

@@ -70,6 +70,7 @@ pub fn ensure_current() -> anyhow::Result<()> {
         stub: &stub,
         echo: true,
         deadline: BUILD_DEADLINE,
+        offline: false,
     }
     .run()
     .context("fix the error above and run the command again")?;

@@ -28,6 +28,8 @@ pub struct BuildRecord {
     /// The tasks whose files did not compile, each with the compiler's messages: their
     /// shipped stubs were built in their place.
     pub compile_errors: BTreeMap<String, String>,
+    /// The worker binary built.
+    pub worker: PathBuf,
     /// The worker binary's modification time when the record was written, in nanoseconds
     /// since the Unix epoch: a binary rebuilt since (by plain cargo) has no record.
     pub worker_modified: u128,
@@ -71,6 +73,8 @@ pub struct StudentBuild<'a> {
     pub echo: bool,
     /// How long all rounds of the build may take.
     pub deadline: Duration,
+    /// Build offline with the lock file as it is (an autograder: no network at grading).
+    pub offline: bool,
 }
 
 /// Where the stand-in stubs of a build from `exercises` go: beside it, in `.pbrlab/`.
@@ -111,6 +115,7 @@ impl StudentBuild<'_> {
                     .context("cargo did not report the worker binary it built")?;
                 let record = BuildRecord {
                     exercises: self.exercises.to_path_buf(),
+                    worker: worker.clone(),
                     compile_errors: errors
                         .into_iter()
                         .map(|(t, m)| (t.name().to_string(), m))
@@ -178,6 +183,9 @@ impl StudentBuild<'_> {
         }
         if self.handout {
             cargo.arg("--no-default-features");
+        }
+        if self.offline {
+            cargo.args(["--offline", "--locked"]);
         }
         // Unset, the build script compiles exercises/ as it is: plain cargo builds and this
         // one then agree, and neither rebuilds after the other.
@@ -415,6 +423,7 @@ mod tests {
         std::fs::write(&worker, "old").unwrap();
         let record = BuildRecord {
             exercises: dir.path().into(),
+            worker: worker.clone(),
             compile_errors: [("reflect".to_string(), "error".to_string())].into(),
             worker_modified: modified_nanos(&worker).unwrap(),
         };

@@ -37,7 +37,8 @@ pub struct Test {
     pub status: &'static str,
     /// What was checked and what failed.
     pub output: String,
-    /// `visible` or `hidden`.
+    /// `visible`, or `after_published` for the hidden cases (shown once the instructor
+    /// publishes the grades).
     pub visibility: &'static str,
 }
 
@@ -123,10 +124,22 @@ fn tests_of(t: &TaskOutcome) -> Vec<Test> {
                 .map(|c| format!("{}: {}", c.name, c.summary))
                 .collect::<Vec<_>>()
                 .join("\n"),
-            visibility: "hidden",
+            visibility: "after_published",
         });
     }
     tests
+}
+
+/// The results of a submission that could not be graded at all: score 0 and why.
+pub fn failed(reason: &str, seconds: f64) -> Results {
+    Results {
+        score: 0.0,
+        execution_time: seconds,
+        output: format!("Not graded: {reason}"),
+        visibility: "visible",
+        stdout_visibility: "hidden",
+        tests: Vec::new(),
+    }
 }
 
 /// The Gradescope results of `report`.

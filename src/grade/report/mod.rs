@@ -1,9 +1,10 @@
 //! Reports of a grading run: a terminal table, JSON, Gradescope's results.json and an HTML
 //! page.
 
-mod gradescope;
+pub mod gradescope;
 mod html;
 pub mod images;
+pub mod prairielearn;
 mod svg;
 mod text;
 
@@ -21,6 +22,8 @@ pub enum Format {
     Json,
     /// Gradescope's results.json.
     Gradescope,
+    /// PrairieLearn's external-grader results.json.
+    Prairielearn,
 }
 
 /// `report` in `format`.
@@ -29,5 +32,8 @@ pub fn render(report: &super::verdict::GradeReport, format: Format) -> anyhow::R
         Format::Text => text(report),
         Format::Json => serde_json::to_string_pretty(report)?,
         Format::Gradescope => serde_json::to_string_pretty(&gradescope(report))?,
+        Format::Prairielearn => {
+            serde_json::to_string_pretty(&prairielearn::prairielearn(report, ""))?
+        }
     })
 }

@@ -1,0 +1,524 @@
+//! `pbrlab grade-class`: every submission in a folder (a subfolder or a zip file per
+//! student) graded with the framework built once. Builds run one at a time (they share
+//! cargo's target folder: each is the student's crate and a link), each into a worker copied
+//! to the student's scratch folder; grading runs in parallel beside the next builds, each
+//! worker sandboxed as always. Each student's result is written as soon as it is known
+//! (`students/<id>.json`), so an interrupted run continues where it stopped; the class
+//! table (`class.csv`) and summary (`summary.md`) are written from all results at the end.
+
+use super::submission::{self, Intake};
+use crate::grade::isolation::{Launcher, WORKER_BINARY};
+use crate::grade::runner::{GradeOptions, grade};
+use crate::grade::student_build::StudentBuild;
+use crate::grade::verdict::{GradeReport, TaskStatus};
+use crate::implementation::ImplChoice;
+use crate::worksheet::TaskId;
+use anyhow::{Context, bail};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// The result of one student.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StudentResult {
+    /// The student: the submission's folder or zip name.
+    pub student: String,
+    /// `graded`, or `not graded` with the reason in `message`.
+    pub status: String,
+    /// Why the submission was not graded, if it was not.
+    pub message: String,
+    /// The files graded, as found in the submission.
+    pub taken: Vec<String>,
+    /// What was ignored, with the reasons.
+    pub ignored: Vec<String>,
+    /// The grade (none when the submission could not be built or graded).
+    pub report: Option<GradeReport>,
+    /// Wall time for the student, build included, in seconds.
+    pub seconds: f64,
+}
+
+/// A class to grade.
+pub struct ClassRun<'a> {
+    /// The instructor repository (the framework built, the reference in).
+    pub root: &'a Path,
+    /// The folder of submissions.
+    pub submissions: &'a Path,
+    /// Where the results go.
+    pub out: &'a Path,
+    /// Hidden cases, with this seed.
+    pub hidden_seed: Option<u64>,
+    /// Students graded at once.
+    pub parallel: usize,
+    /// Time limit per task.
+    pub task_timeout: Duration,
+    /// Memory limit per worker, in bytes.
+    pub memory_limit: u64,
+    /// Show a progress bar.
+    pub progress: bool,
+}
+
+/// The submissions in `dir`: each subfolder and zip file, by student name.
+pub fn submissions(dir: &Path) -> anyhow::Result<Vec<(String, PathBuf)>> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
+        let path = entry?.path();
+        let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+            continue;
+        };
+        if name.starts_with('.') {
+            continue;
+        }
+        let meta = std::fs::symlink_metadata(&path)?;
+        if meta.is_dir() {
+            found.push((name.to_string(), path));
+        } else if let Some(stem) = name.strip_suffix(".zip").filter(|_| meta.is_file()) {
+            found.push((stem.to_string(), path));
+        }
+    }
+    found.sort();
+    let mut names: Vec<&str> = found.iter().map(|(n, _)| n.as_str()).collect();
+    names.dedup();
+    if names.len() != found.len() {
+        bail!(
+            "two submissions in {} have the same student name",
+            dir.display()
+        );
+    }
+    Ok(found)
+}
+
+/// A student's name as a file name: anything but letters, digits, `-`, `_` and `.` becomes `_`.
+fn file_name(student: &str) -> String {
+    student
+        .chars()
+        .map(|c| {
+            if c.is_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// A submission built and ready to grade.
+struct Built {
+    student: String,
+    intake: Intake,
+    scratch: tempfile::TempDir,
+    compile_errors: BTreeMap<TaskId, String>,
+    start: Instant,
+}
+
+impl ClassRun<'_> {
+    fn result_file(&self, student: &str) -> PathBuf {
+        self.out
+            .join("students")
+            .join(format!("{}.json", file_name(student)))
+    }
+
+    /// Grades every submission without a result yet, then writes the class table and
+    /// summary. Returns the seconds per graded submission.
+    pub fn run(&self) -> anyhow::Result<f64> {
+        let all = submissions(self.submissions)?;
+        std::fs::create_dir_all(self.out.join("students"))
+            .with_context(|| format!("making {}", self.out.display()))?;
+        let todo: Vec<_> = all
+            .iter()
+            .filter(|(student, _)| !self.result_file(student).exists())
+            .cloned()
+            .collect();
+        eprintln!(
+            "{} submissions, {} graded already, {} to grade",
+            all.len(),
+            all.len() - todo.len(),
+            todo.len()
+        );
+        // The shipped stubs, read once from git.
+        let mut stubs = BTreeMap::new();
+        for task in TaskId::ALL {
+            stubs.insert(task, crate::handout::stubs::shipped(self.root, task)?);
+        }
+        let stub = |task: TaskId| {
+            stubs
+                .get(&task)
+                .cloned()
+                .context("no shipped stub for the task")
+        };
+        let bar = indicatif::ProgressBar::new(todo.len() as u64);
+        if !self.progress {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+        }
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:30} {pos}/{len} submissions, {elapsed} (ETA {eta}) {msg}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let start = Instant::now();
+        let (tx, rx) = std::sync::mpsc::sync_channel::<Built>(self.parallel.max(1));
+        let rx = std::sync::Mutex::new(rx);
+        let failures = std::sync::Mutex::new(Vec::<String>::new());
+        std::thread::scope(|scope| {
+            for _ in 0..self.parallel.max(1) {
+                scope.spawn(|| {
+                    loop {
+                        let next = rx.lock().ok().and_then(|rx| rx.recv().ok());
+                        let Some(built) = next else { break };
+                        let student = built.student.clone();
+                        let result = self.grade_built(built);
+                        self.save_noting(&result, &failures);
+                        bar.set_message(student);
+                        bar.inc(1);
+                    }
+                });
+            }
+            for (student, path) in &todo {
+                match self.build(student, path, &stub) {
+                    Ok(built) => {
+                        if tx.send(built).is_err() {
+                            break;
+                        }
+                    }
+                    Err(result) => {
+                        self.save_noting(&result, &failures);
+                        bar.inc(1);
+                    }
+                }
+            }
+            drop(tx);
+        });
+        bar.finish_and_clear();
+        let per_submission = start.elapsed().as_secs_f64() / todo.len().max(1) as f64;
+        let failures = failures.into_inner().unwrap_or_default();
+        if !failures.is_empty() {
+            bail!("results could not be saved:\n{}", failures.join("\n"));
+        }
+        self.write_tables(&all)?;
+        Ok(per_submission)
+    }
+
+    /// Takes and builds one submission; a submission that cannot be built is a result.
+    fn build(
+        &self,
+        student: &str,
+        path: &Path,
+        stub: &dyn Fn(TaskId) -> anyhow::Result<String>,
+    ) -> Result<Built, Box<StudentResult>> {
+        let start = Instant::now();
+        let not_graded = |message: String, intake: Option<&Intake>| {
+            Box::new(StudentResult {
+                student: student.to_string(),
+                status: "not graded".into(),
+                message,
+                taken: intake.map(taken).unwrap_or_default(),
+                ignored: intake.map(|i| i.ignored.clone()).unwrap_or_default(),
+                report: None,
+                seconds: start.elapsed().as_secs_f64(),
+            })
+        };
+        let intake = submission::take(path).map_err(|e| not_graded(format!("{e:#}"), None))?;
+        let prepared = (|| -> anyhow::Result<(tempfile::TempDir, BTreeMap<TaskId, String>)> {
+            let scratch = tempfile::Builder::new()
+                .prefix("pbrlab-class-")
+                .tempdir()
+                .context("making a scratch folder")?;
+            let exercises = scratch.path().join("exercises");
+            intake.write(&exercises, stub)?;
+            let record = StudentBuild {
+                root: self.root,
+                exercises: &exercises,
+                bins: &[WORKER_BINARY],
+                handout: !cfg!(feature = "solutions"),
+                stub,
+                echo: false,
+                deadline: Duration::from_secs(600),
+                offline: false,
+            }
+            .run()
+            .context("the submission did not build")?;
+            // The next build overwrites the worker in the target folder: this one's copy.
+            std::fs::copy(&record.worker, scratch.path().join(WORKER_BINARY))
+                .context("copying the worker")?;
+            Ok((scratch, record.errors()))
+        })();
+        match prepared {
+            Ok((scratch, compile_errors)) => Ok(Built {
+                student: student.to_string(),
+                intake,
+                scratch,
+                compile_errors,
+                start,
+            }),
+            Err(e) => Err(not_graded(format!("{e:#}"), Some(&intake))),
+        }
+    }
+
+    fn grade_built(&self, built: Built) -> StudentResult {
+        let launcher = Launcher {
+            program: built.scratch.path().join(WORKER_BINARY),
+            args: Vec::new(),
+            env: Vec::new(),
+        };
+        let options = GradeOptions {
+            implementation: ImplChoice::Student,
+            hidden_seed: self.hidden_seed,
+            timeout: self.task_timeout,
+            memory_limit: self.memory_limit,
+            jobs: 1,
+            compile_errors: built.compile_errors,
+            ..GradeOptions::default()
+        };
+        let (status, message, report) = match grade(&options, &launcher) {
+            Ok(report) => ("graded".to_string(), String::new(), Some(report)),
+            Err(e) => ("not graded".to_string(), format!("{e:#}"), None),
+        };
+        StudentResult {
+            student: built.student,
+            status,
+            message,
+            taken: taken(&built.intake),
+            ignored: built.intake.ignored.clone(),
+            report,
+            seconds: built.start.elapsed().as_secs_f64(),
+        }
+    }
+
+    /// Saves `result`, noting in `failures` when it cannot be saved.
+    fn save_noting(&self, result: &StudentResult, failures: &std::sync::Mutex<Vec<String>>) {
+        if let Err(e) = self.save(result)
+            && let Ok(mut f) = failures.lock()
+        {
+            f.push(format!("{}: {e:#}", result.student));
+        }
+    }
+
+    fn save(&self, result: &StudentResult) -> anyhow::Result<()> {
+        let json = serde_json::to_string_pretty(result)?;
+        crate::atomic_file::write(&self.result_file(&result.student), json.as_bytes())
+    }
+
+    /// Writes `class.csv` and `summary.md` from the saved results of `all`.
+    fn write_tables(&self, all: &[(String, PathBuf)]) -> anyhow::Result<()> {
+        let mut results = Vec::new();
+        for (student, _) in all {
+            let file = self.result_file(student);
+            let text = std::fs::read_to_string(&file)
+                .with_context(|| format!("reading {}", file.display()))?;
+            let result: StudentResult = serde_json::from_str(&text)
+                .with_context(|| format!("reading {}", file.display()))?;
+            results.push(result);
+        }
+        let entries = entry_names(&results);
+        crate::atomic_file::write(
+            &self.out.join("class.csv"),
+            csv(&results, &entries).as_bytes(),
+        )?;
+        crate::atomic_file::write(
+            &self.out.join("summary.md"),
+            summary(&results, &entries).as_bytes(),
+        )?;
+        Ok(())
+    }
+}
+
+fn taken(intake: &Intake) -> Vec<String> {
+    intake.taken.values().map(|(p, _)| p.clone()).collect()
+}
+
+/// The graded entries (tasks, then scene renders) in report order.
+fn entry_names(results: &[StudentResult]) -> Vec<String> {
+    let mut names: Vec<String> = TaskId::ALL.iter().map(|t| t.name().to_string()).collect();
+    for report in results.iter().filter_map(|r| r.report.as_ref()) {
+        for t in &report.tasks {
+            if !names.contains(&t.task) {
+                names.push(t.task.clone());
+            }
+        }
+    }
+    names
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// One row per student: points per entry, total, status.
+pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
+    let mut s = String::from("student");
+    for e in entries {
+        s += &format!(",{}", csv_field(e));
+    }
+    s += ",total,max,status\n";
+    for r in results {
+        s += &csv_field(&r.student);
+        for e in entries {
+            let points = r
+                .report
+                .as_ref()
+                .and_then(|rep| rep.task(e))
+                .map(|t| t.points);
+            s += &format!(",{}", points.unwrap_or(0.0));
+        }
+        let (total, max) = r
+            .report
+            .as_ref()
+            .map_or((0.0, 0.0), |rep| (rep.score, rep.max_score));
+        s += &format!(",{total},{max},{}\n", csv_field(&r.status));
+    }
+    s
+}
+
+/// Per entry: mean points, how many passed, failed, did not compile, crashed or were not
+/// attempted, and the check that failed most often.
+pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
+    let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
+    let mut s = format!(
+        "# Class summary\n\n{} submissions, {} graded, {} not graded.\n\n",
+        results.len(),
+        graded.len(),
+        results.len() - graded.len()
+    );
+    for r in results.iter().filter(|r| r.report.is_none()) {
+        let _ = writeln!(
+            s,
+            "- {} not graded: {}",
+            r.student,
+            r.message.lines().next().unwrap_or("")
+        );
+    }
+    s += "\n| entry | mean | max | passed | failed | compile error | crashed | not attempted | most common failing check |\n";
+    s += "|---|---|---|---|---|---|---|---|---|\n";
+    for e in entries {
+        let outcomes: Vec<_> = graded.iter().filter_map(|g| g.task(e)).collect();
+        if outcomes.is_empty() {
+            continue;
+        }
+        let mean = outcomes.iter().map(|o| o.points).sum::<f64>() / outcomes.len() as f64;
+        let count =
+            |f: &dyn Fn(&TaskStatus) -> bool| outcomes.iter().filter(|o| f(&o.status)).count();
+        let mut failing: BTreeMap<&str, usize> = BTreeMap::new();
+        for o in &outcomes {
+            for c in o.checks.iter().filter(|c| !c.passed) {
+                *failing.entry(c.name.as_str()).or_default() += 1;
+            }
+        }
+        let common = failing
+            .iter()
+            .max_by_key(|(name, n)| (**n, std::cmp::Reverse(*name)))
+            .map_or_else(|| "-".to_string(), |(name, n)| format!("{name} ({n})"));
+        let _ = writeln!(
+            s,
+            "| {e} | {mean:.2} | {} | {} | {} | {} | {} | {} | {} |",
+            outcomes[0].max_points,
+            count(&|st| *st == TaskStatus::Passed),
+            count(&|st| *st == TaskStatus::Failed),
+            count(&|st| matches!(st, TaskStatus::CompileError { .. })),
+            count(&|st| matches!(st, TaskStatus::Crashed { .. })),
+            count(&|st| matches!(st, TaskStatus::NotAttempted | TaskStatus::NeedsTask { .. })),
+            common.replace('|', "/")
+        );
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn submissions_are_folders_and_zips_by_name() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::create_dir(dir.path().join("bob")).unwrap();
+        std::fs::write(dir.path().join("alice.zip"), "").unwrap();
+        std::fs::write(dir.path().join("notes.txt"), "").unwrap();
+        std::fs::create_dir(dir.path().join(".hidden")).unwrap();
+        let names: Vec<_> = submissions(dir.path())
+            .unwrap()
+            .into_iter()
+            .map(|(n, _)| n)
+            .collect();
+        assert_eq!(names, ["alice", "bob"]);
+        std::fs::create_dir(dir.path().join("alice")).unwrap();
+        assert!(submissions(dir.path()).is_err(), "alice twice");
+        assert_eq!(file_name("a/b c"), "a_b_c");
+    }
+
+    #[test]
+    fn the_class_table_has_a_row_per_student_and_a_column_per_task() {
+        let outcome =
+            |task: &str, status: TaskStatus, points: f64| crate::grade::verdict::TaskOutcome {
+                task: task.into(),
+                status,
+                points,
+                max_points: 5.0,
+                checks: Vec::new(),
+                output: String::new(),
+                seconds: 0.0,
+            };
+        let report = GradeReport::new(
+            "student",
+            1,
+            true,
+            vec![
+                outcome("reflect", TaskStatus::Passed, 5.0),
+                outcome(
+                    "mis",
+                    TaskStatus::CompileError {
+                        message: "e".into(),
+                    },
+                    0.0,
+                ),
+            ],
+            1.0,
+        );
+        let results = vec![
+            StudentResult {
+                student: "ann, b".into(),
+                status: "graded".into(),
+                message: String::new(),
+                taken: vec![],
+                ignored: vec![],
+                report: Some(report),
+                seconds: 1.0,
+            },
+            StudentResult {
+                student: "cy".into(),
+                status: "not graded".into(),
+                message: "the submission did not build".into(),
+                taken: vec![],
+                ignored: vec![],
+                report: None,
+                seconds: 1.0,
+            },
+        ];
+        let entries = entry_names(&results);
+        let table = csv(&results, &entries);
+        let lines: Vec<&str> = table.lines().collect();
+        assert_eq!(lines.len(), 3);
+        assert!(
+            lines[0].starts_with("student,reflect,refract_stack"),
+            "{}",
+            lines[0]
+        );
+        assert!(lines[1].starts_with("\"ann, b\",5,"), "{}", lines[1]);
+        assert!(lines[1].ends_with(",5,10,graded"), "{}", lines[1]);
+        assert!(lines[2].ends_with(",0,0,not graded"), "{}", lines[2]);
+        let text = summary(&results, &entries);
+        assert!(
+            text.contains("| reflect | 5.00 | 5 | 1 | 0 | 0 |"),
+            "{text}"
+        );
+        assert!(text.contains("| mis | 0.00 | 5 | 0 | 0 | 1 |"), "{text}");
+        assert!(
+            text.contains("cy not graded: the submission did not build"),
+            "{text}"
+        );
+    }
+}

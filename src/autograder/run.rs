@@ -1,0 +1,191 @@
+//! Grading one submission inside an autograder (`pbrlab autograder run`, called by the
+//! package's `run_autograder` or entrypoint): take the exercise files, build them into a
+//! worker of their own, grade with the hidden cases, and write the service's results file.
+//! The file is written exactly once and atomically, whatever happens: a build that fails
+//! outside the exercise files, an error of the grader, or the deadline passing all give a
+//! valid file with score 0 and the reason.
+
+use super::config::Config;
+use super::schema::{Service, validate};
+use super::submission::{self, Intake};
+use crate::grade::isolation::{Launcher, WORKER_BINARY};
+use crate::grade::report::{self, gradescope, prairielearn};
+use crate::grade::runner::{GradeOptions, grade};
+use crate::grade::student_build::StudentBuild;
+use crate::grade::verdict::GradeReport;
+use crate::implementation::ImplChoice;
+use anyhow::Context;
+use std::path::Path;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// Time kept back from the deadline for writing the results.
+const MARGIN: Duration = Duration::from_secs(5);
+
+/// One submission to grade.
+pub struct Submission<'a> {
+    /// The package's source tree (the framework built, `exercises/` the shipped stubs).
+    pub root: &'a Path,
+    /// The package's settings.
+    pub config: &'a Config,
+    /// The results format.
+    pub service: Service,
+    /// The submission: a folder or a zip file.
+    pub files: &'a Path,
+    /// Where the results file goes.
+    pub results: &'a Path,
+}
+
+/// A graded submission, before it is written in a service's format.
+pub struct Graded {
+    /// What was taken from the submission and what was ignored.
+    pub intake: Intake,
+    /// The grade.
+    pub report: GradeReport,
+}
+
+impl Submission<'_> {
+    /// Grades and writes the results file; returns the grade when there was one. Fails only
+    /// when the results file itself cannot be written.
+    pub fn run(&self) -> anyhow::Result<Option<Graded>> {
+        let start = Instant::now();
+        let deadline = Duration::from_secs_f64(self.config.deadline.max(10.0));
+        let written = Arc::new(Mutex::new(false));
+        {
+            let written = Arc::clone(&written);
+            let results = self.results.to_path_buf();
+            let service = self.service;
+            std::thread::spawn(move || {
+                std::thread::sleep(deadline.saturating_sub(MARGIN));
+                let reason = format!(
+                    "grading did not finish within {} s (an infinite loop at build time, or \
+                     a very slow submission)",
+                    deadline.as_secs()
+                );
+                if write_once(&written, &results, &failed(service, &reason, start)).is_ok() {
+                    eprintln!("pbrlab: {reason}");
+                    std::process::exit(0);
+                }
+            });
+        }
+        let graded = self.grade(deadline.saturating_sub(MARGIN * 2));
+        let json = match &graded {
+            Ok(graded) => self.results_json(graded, start),
+            Err(e) => failed(self.service, &format!("{e:#}"), start),
+        };
+        write_once(&written, self.results, &json)?;
+        Ok(graded.ok())
+    }
+
+    fn grade(&self, time: Duration) -> anyhow::Result<Graded> {
+        let start = Instant::now();
+        let intake = submission::take(self.files)?;
+        print!("{}", intake.ignored_text());
+        let scratch = tempfile::Builder::new()
+            .prefix("pbrlab-submission-")
+            .tempdir()
+            .context("making the scratch folder")?;
+        let exercises = scratch.path().join("exercises");
+        let stub = |task| super::stub_in(self.root, task);
+        intake.write(&exercises, &stub)?;
+        let record = StudentBuild {
+            root: self.root,
+            exercises: &exercises,
+            bins: &[WORKER_BINARY],
+            handout: !cfg!(feature = "solutions"),
+            stub: &stub,
+            echo: false,
+            deadline: time,
+            offline: true,
+        }
+        .run()
+        .context("the submission did not build")?;
+        let launcher = Launcher {
+            program: record.worker.clone(),
+            args: Vec::new(),
+            env: Vec::new(),
+        };
+        let options = GradeOptions {
+            implementation: ImplChoice::Student,
+            seed: self.config.seed,
+            hidden_seed: Some(self.config.hidden_seed),
+            timeout: Duration::from_secs_f64(self.config.task_timeout.max(1.0)),
+            memory_limit: self.config.memory_limit_mb << 20,
+            jobs: self.config.jobs.max(1),
+            compile_errors: record.errors(),
+            ..GradeOptions::default()
+        };
+        let mut report = grade(&options, &launcher)?;
+        report.seconds = start.elapsed().as_secs_f64();
+        println!("{}", report::text(&report));
+        Ok(Graded { intake, report })
+    }
+
+    fn results_json(&self, graded: &Graded, start: Instant) -> String {
+        let mut header = graded.intake.ignored_text();
+        let taken: Vec<&str> = graded
+            .intake
+            .taken
+            .values()
+            .map(|(p, _)| p.as_str())
+            .collect();
+        header += &if taken.is_empty() {
+            "No exercise file was found in the submission: every task is its stub.\n".into()
+        } else {
+            format!("Graded files: {}\n", taken.join(", "))
+        };
+        for protections in &graded.report.sandbox {
+            header += &format!("Sandbox of the workers: {protections}\n");
+        }
+        let json = match self.service {
+            Service::Gradescope => {
+                let mut results = gradescope::gradescope(&graded.report);
+                results.output = format!("{header}{}", results.output);
+                results.execution_time = start.elapsed().as_secs_f64();
+                serde_json::to_string_pretty(&results)
+            }
+            Service::Prairielearn => {
+                serde_json::to_string_pretty(&prairielearn::prairielearn(&graded.report, &header))
+            }
+        };
+        match json {
+            Ok(json) => match validate(self.service, &json) {
+                Ok(()) => json,
+                Err(e) => failed(
+                    self.service,
+                    &format!("the grader built an invalid results file ({e:#})"),
+                    start,
+                ),
+            },
+            Err(e) => failed(self.service, &format!("{e}"), start),
+        }
+    }
+}
+
+/// The results of a submission that could not be graded, in `service`'s format.
+pub fn failed(service: Service, reason: &str, start: Instant) -> String {
+    let json = match service {
+        Service::Gradescope => {
+            serde_json::to_string_pretty(&gradescope::failed(reason, start.elapsed().as_secs_f64()))
+        }
+        Service::Prairielearn => serde_json::to_string_pretty(&prairielearn::failed(reason)),
+    };
+    json.unwrap_or_else(|_| r#"{"score": 0, "gradable": true}"#.into())
+}
+
+/// Writes `json` to `results` atomically, unless it has been written already.
+fn write_once(written: &Mutex<bool>, results: &Path, json: &str) -> anyhow::Result<()> {
+    let mut done = written
+        .lock()
+        .map_err(|_| anyhow::anyhow!("the results lock is poisoned"))?;
+    if *done {
+        anyhow::bail!("the results were written already");
+    }
+    if let Some(dir) = results.parent() {
+        std::fs::create_dir_all(dir).with_context(|| format!("making {}", dir.display()))?;
+    }
+    crate::atomic_file::write(results, json.as_bytes())
+        .with_context(|| format!("writing {}", results.display()))?;
+    *done = true;
+    Ok(())
+}

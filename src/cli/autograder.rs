@@ -1,0 +1,108 @@
+//! `pbrlab autograder`: write a Gradescope or PrairieLearn package, and (inside one) grade a
+//! submission.
+
+use crate::autograder::config::Config;
+use crate::autograder::package;
+use crate::autograder::run::Submission;
+use crate::autograder::schema::Service;
+use anyhow::Context;
+use std::path::PathBuf;
+
+/// Arguments of `pbrlab autograder`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Step,
+}
+
+/// The steps of `pbrlab autograder`.
+#[derive(clap::Subcommand, Debug)]
+pub enum Step {
+    /// Write a Gradescope autograder (zip the folder's contents and upload them).
+    Gradescope(PackageArgs),
+    /// Write a PrairieLearn external grader (a Dockerfile) and an example question.
+    Prairielearn(PackageArgs),
+    /// Grade one submission inside a package (what its scripts call).
+    #[command(hide = true)]
+    Run(RunArgs),
+}
+
+/// Arguments of the package writers.
+#[derive(clap::Args, Debug)]
+pub struct PackageArgs {
+    /// The new (or empty) folder to write the package into.
+    pub out: PathBuf,
+    /// The seed of the hidden cases (default: drawn at random and kept in the package).
+    #[arg(long)]
+    pub hidden_seed: Option<u64>,
+}
+
+/// Arguments of `pbrlab autograder run`.
+#[derive(clap::Args, Debug)]
+pub struct RunArgs {
+    /// The package's settings file.
+    #[arg(long)]
+    pub config: PathBuf,
+    /// The submission: a folder or a zip file.
+    #[arg(long)]
+    pub submission: PathBuf,
+    /// Where to write the results file.
+    #[arg(long)]
+    pub results: PathBuf,
+    /// The results format.
+    #[arg(long, value_enum)]
+    pub service: Service,
+}
+
+/// Runs `pbrlab autograder`.
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let root = crate::repository_root();
+    match args.command {
+        Step::Gradescope(p) => write(root, p, Service::Gradescope),
+        Step::Prairielearn(p) => write(root, p, Service::Prairielearn),
+        Step::Run(r) => {
+            let config = match Config::load(&r.config) {
+                Ok(config) => config,
+                Err(e) => {
+                    // Still a results file.
+                    let json = crate::autograder::run::failed(
+                        r.service,
+                        &format!("{e:#}"),
+                        std::time::Instant::now(),
+                    );
+                    crate::atomic_file::write(&r.results, json.as_bytes())?;
+                    return Err(e);
+                }
+            };
+            Submission {
+                root,
+                config: &config,
+                service: r.service,
+                files: &r.submission,
+                results: &r.results,
+            }
+            .run()
+            .map(|_| ())
+        }
+    }
+}
+
+fn write(root: &std::path::Path, p: PackageArgs, service: Service) -> anyhow::Result<()> {
+    let files = package::write(root, &p.out, service, p.hidden_seed)
+        .with_context(|| format!("writing the package into {}", p.out.display()))?;
+    eprintln!("wrote {} files into {}", files.len(), p.out.display());
+    match service {
+        Service::Gradescope => eprintln!(
+            "next: (cd {} && zip -r ../autograder.zip .), then upload autograder.zip as the \
+             assignment's autograder (README: Grading a class)",
+            p.out.display()
+        ),
+        Service::Prairielearn => eprintln!(
+            "next: docker build -t YOURNAME/pbrlab-grader {}, push it, and copy question/ \
+             into your course (README: Grading a class)",
+            p.out.display()
+        ),
+    }
+    Ok(())
+}
