@@ -376,7 +376,7 @@ pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
 }
 
 /// Per entry: mean points, how many passed, failed, did not compile, crashed or were not
-/// attempted, and the check that failed most often.
+/// attempted, and the check that failed most often in the submissions that failed it.
 pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
     let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
     let mut s = format!(
@@ -393,7 +393,10 @@ pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
             r.message.lines().next().unwrap_or("")
         );
     }
-    s += "\n| entry | mean | max | passed | failed | compile error | crashed | not attempted | most common failing check |\n";
+    if graded.len() < results.len() {
+        s += "\n";
+    }
+    s += "| entry | mean | max | passed | failed | compile error | crashed | not attempted | most common failing check |\n";
     s += "|---|---|---|---|---|---|---|---|---|\n";
     for e in entries {
         let outcomes: Vec<_> = graded.iter().filter_map(|g| g.task(e)).collect();
@@ -404,7 +407,7 @@ pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
         let count =
             |f: &dyn Fn(&TaskStatus) -> bool| outcomes.iter().filter(|o| f(&o.status)).count();
         let mut failing: BTreeMap<&str, usize> = BTreeMap::new();
-        for o in &outcomes {
+        for o in outcomes.iter().filter(|o| o.status == TaskStatus::Failed) {
             for c in o.checks.iter().filter(|c| !c.passed) {
                 *failing.entry(c.name.as_str()).or_default() += 1;
             }
