@@ -31,7 +31,9 @@
 //!
 //! ## Edge cases
 //! A BRDF may return NaN or ∞ (the custom one does at `cos θ = 0`). `f32::min` and `max`
-//! silently skip NaN; make sure a NaN makes the report implausible instead.
+//! silently skip NaN; a NaN must reach the report instead: `min_value`, and the albedo the
+//! NaN enters, are then NaN (a BRDF that returns NaN is known to be neither non-negative nor
+//! energy-conserving), whatever the reciprocity test says.
 
 use crate::prelude::*;
 

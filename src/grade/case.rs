@@ -18,7 +18,8 @@ pub struct ValueCase {
     /// Shown with a failure of this case: the usual cause.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
-    /// The reference's output (always finite).
+    /// The reference's output: finite, except where the rule judges a verdict (a
+    /// reciprocity gap of ∞, a plausibility report with NaN, for a BRDF that returns NaN).
     pub expected: Output,
 }
 
@@ -41,6 +42,14 @@ pub enum Rule {
         /// Relative tolerance on `max_albedo`, for BRDFs whose albedo is a constant.
         albedo: Option<f64>,
     },
+}
+
+impl Rule {
+    /// Whether a non-finite expected output is meaningful under this rule: the verdict
+    /// rules judge which side of a threshold a value falls, and NaN or ∞ is a side.
+    pub fn judges_verdicts(&self) -> bool {
+        !matches!(self, Rule::Close(_))
+    }
 }
 
 /// Below this a report's `min_value` counts as negative.
@@ -68,8 +77,10 @@ impl ValueCase {
                 let (Some(g), Some(e)) = (got.as_number(), self.expected.as_number()) else {
                     return Err(format!("got {got}, expected a number"));
                 };
+                // NaN is never at most the threshold: a gap that is NaN says "not
+                // reciprocal", as a non-finite BRDF value must.
                 let side = |x: f64| if x <= threshold { "≤" } else { ">" };
-                if !g.is_nan() && side(g) == side(e) {
+                if side(g) == side(e) {
                     Ok(Error::default())
                 } else {
                     Err(format!(
@@ -130,7 +141,20 @@ fn judge_plausibility(
             return Err(format!("got {got}, expected a report like {expected}"));
         };
         let verdict = |ok: bool| if ok { c.yes } else { c.no };
-        if g.is_nan() {
+        if e.is_nan() {
+            // The BRDF returns NaN somewhere: the report must not pass the condition (a NaN
+            // that reached it, or a value that fails it).
+            if (c.holds)(g) {
+                problems.push(format!(
+                    "{} = {} means {}, but the BRDF returns NaN for some directions \
+                     (reference {} = NaN): a NaN was skipped",
+                    c.field,
+                    fmt_num(g),
+                    c.yes,
+                    c.field
+                ));
+            }
+        } else if g.is_nan() {
             problems.push(format!("{} is NaN", c.field));
         } else if (c.holds)(g) != (c.holds)(e) {
             problems.push(format!(

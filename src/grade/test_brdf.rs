@@ -25,6 +25,15 @@ pub enum TestBrdf {
     /// `cos θi / (2π)`, a function of the incident direction only: positive and
     /// energy-conserving (albedo `cos θi / 2`), but not reciprocal.
     IncidentOnly,
+    /// [`TestBrdf::IncidentOnly`] scaled by `scale` (say 1e-6): as far from reciprocal, in
+    /// relative terms, but every absolute difference is tiny.
+    ScaledIncidentOnly {
+        /// The factor.
+        scale: f32,
+    },
+    /// Lambert with albedo 1/2, but NaN where `cos θi cos θo < 0.05` (a formula that divides
+    /// by zero near grazing): symmetric, yet no test can call it reciprocal or plausible.
+    NanNearGrazing,
 }
 
 impl TestBrdf {
@@ -37,6 +46,9 @@ impl TestBrdf {
             TestBrdf::Lambert { albedo } => albedo * FRAC_1_PI,
             TestBrdf::CosinePower { k, n } => k * wi.dot(wo).powi(n) / (wi.z * wo.z),
             TestBrdf::IncidentOnly => 0.5 * wi.z * FRAC_1_PI,
+            TestBrdf::ScaledIncidentOnly { scale } => scale * 0.5 * wi.z * FRAC_1_PI,
+            TestBrdf::NanNearGrazing if wi.z * wo.z < 0.05 => f32::NAN,
+            TestBrdf::NanNearGrazing => 0.5 * FRAC_1_PI,
         }
     }
 
@@ -48,6 +60,10 @@ impl TestBrdf {
                 format!("k (wi·wo)^{n} / (cos θi cos θo) with k = {k:.4}")
             }
             TestBrdf::IncidentOnly => "cos θi / (2π) (depends on wi only)".into(),
+            TestBrdf::ScaledIncidentOnly { scale } => {
+                format!("{scale:e} cos θi / (2π) (depends on wi only, and tiny)")
+            }
+            TestBrdf::NanNearGrazing => "Lambert 1/2, NaN where cos θi cos θo < 0.05".into(),
         }
     }
 }

@@ -334,12 +334,15 @@ fn cosine_weighted_check(
                 continue;
             }
             let f = brdf(wi, wo);
-            report.min_value = report.min_value.min(f);
+            // A NaN reaches the report (f32::min would skip it).
+            if f.is_nan() || f < report.min_value {
+                report.min_value = f;
+            }
             // f cos / (cos/π) = π f
             sum += (PI * f) as f64;
         }
         let albedo = (sum / samples as f64) as f32;
-        if albedo > report.max_albedo {
+        if albedo.is_nan() || albedo > report.max_albedo {
             report.max_albedo = albedo;
             report.worst_wi = wi;
         }

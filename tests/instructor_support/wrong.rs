@@ -231,6 +231,32 @@ fn closed_form() -> Vec<Variant> {
                 })
             },
         ),
+        wrong("reciprocity gap whose f32::max skips NaN", Phong, |p| {
+            p.reciprocity_gap = Some(|brdf, sampler, pairs| {
+                let mut gap = 0.0f32;
+                for _ in 0..pairs {
+                    let a = uniform_hemisphere(sampler.next_2d());
+                    let b = uniform_hemisphere(sampler.next_2d());
+                    let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
+                    if f_ab != f_ba {
+                        gap = gap.max((f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs()));
+                    }
+                }
+                gap
+            })
+        }),
+        wrong("absolute reciprocity gap", Phong, |p| {
+            p.reciprocity_gap = Some(|brdf, sampler, pairs| {
+                let mut gap = 0.0f32;
+                for _ in 0..pairs {
+                    let a = uniform_hemisphere(sampler.next_2d());
+                    let b = uniform_hemisphere(sampler.next_2d());
+                    let d = (brdf(a, b) - brdf(b, a)).abs();
+                    gap = if d.is_nan() { d } else { gap.max(d) };
+                }
+                gap
+            })
+        }),
         // kajiya_kay
         wrong(
             "the worksheet's form (÷ sin θi sin θo, sin^p θh)",
@@ -329,6 +355,18 @@ fn closed_form() -> Vec<Variant> {
             p.brdf_check = Some(|t, brdf, sampler, samples| {
                 let mut r = sol::brdf_check::brdf_check(t, brdf, sampler, samples);
                 r.max_albedo *= uniform_hemisphere_pdf();
+                r
+            })
+        }),
+        wrong("f32::min and max that skip NaN", BrdfCheck, |p| {
+            p.brdf_check = Some(|t, brdf, sampler, samples| {
+                let mut r = sol::brdf_check::brdf_check(t, brdf, sampler, samples);
+                if r.min_value.is_nan() {
+                    r.min_value = 0.5 * FRAC_1_PI;
+                }
+                if r.max_albedo.is_nan() {
+                    r.max_albedo = 0.5;
+                }
                 r
             })
         }),

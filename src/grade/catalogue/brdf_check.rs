@@ -60,6 +60,13 @@ pub fn fixed() -> Vec<CaseInput> {
             None,
         )
         .note("compare f(wi, wo) with f(wo, wi)"),
+        check(
+            "a BRDF that is NaN near grazing is not plausible",
+            TestBrdf::NanNearGrazing,
+            15,
+            None,
+        )
+        .note("a NaN must reach the report: f32::min and max skip it"),
     ]
 }
 

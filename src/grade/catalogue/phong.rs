@@ -85,6 +85,17 @@ pub fn fixed() -> Vec<CaseInput> {
             TestBrdf::IncidentOnly,
             3,
         ),
+        gap(
+            "a tiny BRDF of wi alone is not reciprocal either (the gap is relative)",
+            TestBrdf::ScaledIncidentOnly { scale: 1e-6 },
+            4,
+        ),
+        gap(
+            "a BRDF that is NaN near grazing cannot be called reciprocal",
+            TestBrdf::NanNearGrazing,
+            5,
+        )
+        .note("a NaN (or ∞) value must make the gap NaN or ∞: f32::max skips NaN"),
     ]
 }
 
