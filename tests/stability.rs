@@ -220,6 +220,7 @@ fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
             Flaw::DeltaTrackingSheet,
             vec![
                 ("delta_tracking/zero_majorant", WrongValue),
+                ("delta_tracking/nan_majorant", WrongValue),
                 ("delta_tracking/empty_medium", WrongValue),
                 ("delta_tracking/empty_segment", WrongValue),
             ],

@@ -214,6 +214,10 @@ enum TrackingFlaw {
     EscapeAsAbsorption,
     /// Every tentative collision taken as real (no null collisions).
     NoNullCollisions,
+    /// `majorant <= 0` as the only guard: a NaN majorant walks on with NaN distances.
+    UnguardedNanMajorant,
+    /// A walk that ran out of steps reported as an escape.
+    ExhaustedAsEscape,
 }
 
 fn tracking_variant(
@@ -225,7 +229,8 @@ fn tracking_variant(
     flaw: TrackingFlaw,
 ) -> FreeFlight {
     let majorant = medium.majorant();
-    if majorant <= 0.0 {
+    let nan_guard = flaw != TrackingFlaw::UnguardedNanMajorant;
+    if majorant <= 0.0 || (nan_guard && majorant.is_nan()) {
         return FreeFlight::Escape;
     }
     let reused = (sampler.next_1d(), sampler.next_1d());
@@ -258,7 +263,11 @@ fn tracking_variant(
             return FreeFlight::Scatter { t };
         }
     }
-    FreeFlight::Exhausted
+    if flaw == TrackingFlaw::ExhaustedAsEscape {
+        FreeFlight::Escape
+    } else {
+        FreeFlight::Exhausted
+    }
 }
 
 /// The catalogue.
@@ -314,5 +323,19 @@ pub fn catalogue() -> Vec<Variant> {
                 tracking_variant(m, r, tm, n, s, TrackingFlaw::NoNullCollisions)
             })
         }),
+        wrong("a NaN majorant is not guarded", DeltaTracking, |p| {
+            p.delta_tracking = Some(|m, r, tm, n, s| {
+                tracking_variant(m, r, tm, n, s, TrackingFlaw::UnguardedNanMajorant)
+            })
+        }),
+        wrong(
+            "a walk out of steps reported as an escape",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::ExhaustedAsEscape)
+                })
+            },
+        ),
     ]
 }

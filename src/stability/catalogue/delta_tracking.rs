@@ -1,6 +1,6 @@
-//! Stability cases of the `delta_tracking` task: a zero majorant, a random number of
-//! exactly 0, σt = 1e6, a majorant 10⁶ and 10⁹ times σt, a medium with σt = 0 under a
-//! positive majorant, and an empty segment.
+//! Stability cases of the `delta_tracking` task: a zero and a NaN majorant, a random number
+//! of exactly 0, σt = 1e6, a majorant 10⁶ and 10⁹ times σt, a walk that runs out of steps,
+//! a medium with σt = 0 under a positive majorant, and an empty segment.
 
 use crate::geometry::Ray;
 use crate::medium::{Coefficients, FreeFlight, Homogeneous, Medium};
@@ -186,6 +186,44 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             expect: Expect::Finite,
             guard: "steps of 1e-9 stop moving t in f32 near t = 0.01: the step bound must end the \
                     loop (exhausted), or it never ends",
+        },
+        Case {
+            task: TaskId::DeltaTracking,
+            name: "delta_tracking/nan_majorant",
+            input: "σa = σs = 0.5, majorant NaN, t_max = 1, 1000 steps allowed",
+            eval: |t| {
+                let medium = Loose {
+                    coefficients: coefficients(0.5),
+                    majorant: f32::NAN,
+                };
+                fly(t, &medium, 1.0, 1000, &mut Sampler::new(11, 0))
+            },
+            range: ANY,
+            expect: Expect::Rule {
+                text: "escape",
+                holds: escaped,
+            },
+            guard: "`σ̄ <= 0` is false for NaN: test `!(σ̄ > 0)` (or is_nan) and escape before \
+                    dividing, or every distance is NaN and the walk runs out of steps",
+        },
+        Case {
+            task: TaskId::DeltaTracking,
+            name: "delta_tracking/out_of_steps",
+            input: "σt = 2e-3, majorant 1e3, t_max = 1, 10 steps allowed",
+            eval: |t| {
+                let medium = Loose {
+                    coefficients: coefficients(1e-3),
+                    majorant: 1e3,
+                };
+                fly(t, &medium, 1.0, 10, &mut Sampler::new(13, 0))
+            },
+            range: ANY,
+            expect: Expect::Rule {
+                text: "exhausted (about 1000 steps are needed to cross)",
+                holds: |v| v.field("exhausted").is_some(),
+            },
+            guard: "a walk that runs out of steps has not crossed the segment: return \
+                    Exhausted, not Escape (a renderer would pass light that never got through)",
         },
         Case {
             task: TaskId::DeltaTracking,
