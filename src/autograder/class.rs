@@ -7,6 +7,7 @@
 //! table (`class.csv`) and summary (`summary.md`) are written from all results at the end.
 
 use super::submission::{self, Intake};
+use crate::grade::credit::Credit;
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
 use crate::grade::runner::{GradeOptions, grade};
 use crate::grade::student_build::StudentBuild;
@@ -55,6 +56,8 @@ pub struct ClassRun<'a> {
     pub task_timeout: Duration,
     /// Memory limit per worker, in bytes.
     pub memory_limit: u64,
+    /// How partly right checks are credited.
+    pub credit: Credit,
     /// Show a progress bar.
     pub progress: bool,
 }
@@ -269,6 +272,7 @@ impl ClassRun<'_> {
             memory_limit: self.memory_limit,
             jobs: 1,
             compile_errors: built.compile_errors,
+            credit: self.credit,
             ..GradeOptions::default()
         };
         let (status, message, report) = match grade(&options, &launcher) {

@@ -2,6 +2,7 @@
 //! [`FILE`] and read back for every submission. The package stays with the instructor (the
 //! student never sees it), so the hidden seed is safe there.
 
+use crate::grade::credit::Credit;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -24,6 +25,10 @@ pub struct Config {
     pub memory_limit_mb: u64,
     /// Tasks graded at once (Gradescope's default container has half a CPU).
     pub jobs: usize,
+    /// How partly right checks are credited (`{"policy": "per_case"}`, `all_or_nothing`,
+    /// or `{"policy": "threshold", "fraction": 0.9}`).
+    #[serde(default)]
+    pub credit: Credit,
 }
 
 impl Config {
@@ -36,6 +41,7 @@ impl Config {
             deadline: 540.0,
             memory_limit_mb: 4096,
             jobs: 1,
+            credit: Credit::default(),
         }
     }
 

@@ -113,6 +113,7 @@ impl Submission<'_> {
             memory_limit: self.config.memory_limit_mb << 20,
             jobs: self.config.jobs.max(1),
             compile_errors: record.errors(),
+            credit: self.config.credit,
             ..GradeOptions::default()
         };
         let mut report = grade(&options, &launcher)?;

@@ -1,4 +1,5 @@
 use crate::grade::calibration;
+use crate::grade::credit::Credit;
 use crate::grade::history;
 use crate::grade::isolation::Launcher;
 use crate::grade::report::{self, Format};
@@ -42,6 +43,11 @@ pub struct Args {
     /// Tasks graded at once (default: the number of cores).
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// How a partly right check is credited: per-case (the fraction of its cases that
+    /// pass), all-or-nothing, or threshold:F (all when a fraction F of the cases pass).
+    /// Statistical checks are all or nothing under any policy.
+    #[arg(long, default_value = "per-case")]
+    pub credit: Credit,
     /// Skip the render checks (they run when every task is graded).
     #[arg(long)]
     pub no_renders: bool,
@@ -77,6 +83,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         memory_limit: args.memory_limit_mb << 20,
         renders: !args.no_renders,
         report_dir: args.html.clone(),
+        credit: args.credit,
         ..GradeOptions::default()
     };
     if let Some(jobs) = args.jobs {

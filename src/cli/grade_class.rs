@@ -1,6 +1,7 @@
 //! `pbrlab grade-class`: grade every submission in a folder.
 
 use crate::autograder::class::ClassRun;
+use crate::grade::credit::Credit;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -22,6 +23,10 @@ pub struct Args {
     /// Time limit per task, in seconds.
     #[arg(long, default_value_t = 30.0)]
     pub timeout: f64,
+    /// How a partly right check is credited: per-case, all-or-nothing or threshold:F
+    /// (see `pbrlab grade --help`).
+    #[arg(long, default_value = "per-case")]
+    pub credit: Credit,
     /// Memory limit per task, in MiB.
     #[arg(long, default_value_t = 4096)]
     pub memory_limit_mb: u64,
@@ -44,6 +49,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         parallel,
         task_timeout: Duration::from_secs_f64(args.timeout),
         memory_limit: args.memory_limit_mb << 20,
+        credit: args.credit,
         progress: true,
     }
     .run()?;

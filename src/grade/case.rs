@@ -211,7 +211,11 @@ mod tests {
         let c = case(Rule::SameSide { threshold: 1e-3 }, 0.4f32.into_output());
         assert!(c.judge(&0.9f32.into_output()).is_ok());
         assert!(c.judge(&0.0f32.into_output()).is_err());
-        assert!(c.judge(&f32::NAN.into_output()).is_err());
+        // NaN is never at most the threshold: "not reciprocal", as a NaN BRDF value demands.
+        assert!(c.judge(&f32::NAN.into_output()).is_ok());
+        let reciprocal = case(Rule::SameSide { threshold: 1e-3 }, 0.0f32.into_output());
+        assert!(reciprocal.judge(&f32::NAN.into_output()).is_err());
+        assert!(reciprocal.judge(&0.0f32.into_output()).is_ok());
     }
 
     #[test]

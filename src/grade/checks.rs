@@ -633,7 +633,8 @@ fn units_check(name: &str, variances: &VarianceOutputs) -> CheckResult {
 /// A task whose cases all stopped at its own stub is not attempted. One whose failures all
 /// stopped at other tasks' stubs (possible only without the reference, where the student's
 /// own dependencies run) needs those tasks first. Otherwise the points are split by check
-/// weight.
+/// weight, each check earning its `credit` (set by the course's policy,
+/// [`super::credit::Credit::apply`]).
 pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
     let points = task.info().points as f64;
     if checks.is_empty() {
@@ -656,10 +657,10 @@ pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
         return (TaskStatus::NeedsTask { task }, 0.0);
     }
     let total = super::verdict::total(checks.iter().map(|c| c.weight));
-    let passed = super::verdict::total(checks.iter().filter(|c| c.passed).map(|c| c.weight));
+    let earned = super::verdict::total(checks.iter().map(|c| c.weight * c.credit));
     if checks.iter().all(|c| c.passed) {
         (TaskStatus::Passed, points)
     } else {
-        (TaskStatus::Failed, points * passed / total)
+        (TaskStatus::Failed, points * earned / total)
     }
 }

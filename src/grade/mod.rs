@@ -24,6 +24,7 @@ pub mod call;
 pub mod case;
 pub mod catalogue;
 pub mod checks;
+pub mod credit;
 pub mod estimator;
 pub mod expected;
 pub mod history;

@@ -2,6 +2,7 @@
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
 use super::checks::{TaskInput, judge_finished, judge_task, score};
+use super::credit::Credit;
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
 use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
@@ -38,6 +39,8 @@ pub struct GradeOptions {
     pub renders: bool,
     /// Where the HTML report goes (render checks write their pictures there).
     pub report_dir: Option<std::path::PathBuf>,
+    /// How partly right checks are credited.
+    pub credit: Credit,
     /// The tasks whose exercise files did not compile, with the compiler's messages
     /// ([`super::student_build`]): each is reported as a compile error, without a worker.
     pub compile_errors: BTreeMap<TaskId, String>,
@@ -56,6 +59,7 @@ impl Default for GradeOptions {
             renders: true,
             report_dir: None,
             compile_errors: BTreeMap::new(),
+            credit: Credit::default(),
         }
     }
 }
@@ -259,7 +263,7 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
     let mut sandbox = std::collections::BTreeSet::new();
     for ((task, input), run) in graded.iter().zip(run_all(launcher, jobs, options)) {
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
-        let mut outcome = outcome(*task, input, run);
+        let mut outcome = outcome(*task, input, run, options.credit);
         if options.hidden_seed.is_some() && !outcome.output.is_empty() {
             // What the code printed could carry the hidden inputs out.
             outcome.output = HIDDEN_OUTPUT.into();
@@ -428,11 +432,17 @@ pub const HIDDEN_OUTPUT: &str =
 
 /// A task's outcome from its worker run: every check of the task, judged from the
 /// worker's raw outputs against `input`'s expected data.
-pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> TaskOutcome {
+pub fn outcome(
+    task: TaskId,
+    input: &TaskInput,
+    run: isolation::WorkerRun,
+    credit: Credit,
+) -> TaskOutcome {
     let max_points = task.info().points as f64;
     let (status, points, checks) = match run.outcome {
         Ok(Record::Outputs { raw }) => {
-            let checks = judge_task(task, input, &raw);
+            let mut checks = judge_task(task, input, &raw);
+            credit.apply(&mut checks);
             let (status, points) = score(task, &checks);
             (status, points, checks)
         }
@@ -451,7 +461,8 @@ pub fn outcome(task: TaskId, input: &TaskInput, run: isolation::WorkerRun) -> Ta
                 Some(step) => format!("{reason}, while running {step}"),
                 None => reason,
             };
-            let finished = judge_finished(task, input, &run.finished_raw);
+            let mut finished = judge_finished(task, input, &run.finished_raw);
+            credit.apply(&mut finished);
             (TaskStatus::Crashed { reason }, 0.0, finished)
         }
     };
@@ -486,6 +497,8 @@ fn render_outcome(
         });
         let mut result = super::renders::judge(check.scene, rendered, report_dir);
         result.weight = 1.0;
+        // A render is one statistical test: all or nothing under any policy.
+        result.credit = Credit::AllOrNothing.of(&result);
         vec![result]
     };
     let (status, checks) = match run.outcome {

@@ -57,6 +57,10 @@ pub struct CheckResult {
     pub visibility: Visibility,
     /// Whether it passed.
     pub passed: bool,
+    /// The fraction of its share of the points it earned, in [0, 1]: 1 when it passed,
+    /// else as the course's credit policy gives ([`super::credit::Credit`]).
+    #[serde(default)]
+    pub credit: f64,
     /// Its share of the task's points, relative to the task's other checks.
     pub weight: f64,
     /// One line: what was measured and the verdict.
@@ -102,6 +106,7 @@ impl CheckResult {
             kind,
             visibility: Visibility::Visible,
             passed: false,
+            credit: 0.0,
             weight: 1.0,
             summary: String::new(),
             failures: Vec::new(),

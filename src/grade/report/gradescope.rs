@@ -53,14 +53,7 @@ fn title(task: &str) -> String {
 /// task's points are split by check weight; a task that crashed or was not attempted scores
 /// 0 in both.
 fn tests_of(t: &TaskOutcome) -> Vec<Test> {
-    let weight_of = |vis: Visibility, passed_only: bool| {
-        total(
-            t.checks
-                .iter()
-                .filter(|c| c.visibility == vis && (c.passed || !passed_only))
-                .map(|c| c.weight),
-        )
-    };
+    let of = |vis: Visibility| t.checks.iter().filter(move |c| c.visibility == vis);
     let all = total(t.checks.iter().map(|c| c.weight));
     let share = |w: f64| {
         if all > 0.0 {
@@ -70,9 +63,12 @@ fn tests_of(t: &TaskOutcome) -> Vec<Test> {
         }
     };
     let scored = matches!(t.status, TaskStatus::Passed | TaskStatus::Failed);
+    // Each check earns its weight times its credit (the course's policy for partly right
+    // checks); the group passed when every check in it did.
     let group = |vis: Visibility| {
-        let (weight, earned) = (weight_of(vis, false), weight_of(vis, true));
-        let passed = scored && earned == weight;
+        let weight = total(of(vis).map(|c| c.weight));
+        let earned = total(of(vis).map(|c| c.weight * c.credit));
+        let passed = scored && of(vis).all(|c| c.passed);
         (
             share(weight),
             if scored { share(earned) } else { 0.0 },
@@ -110,7 +106,7 @@ fn tests_of(t: &TaskOutcome) -> Vec<Test> {
         output,
         visibility: "visible",
     }];
-    if weight_of(Visibility::Hidden, false) > 0.0 {
+    if of(Visibility::Hidden).next().is_some() {
         let (max_score, score, passed) = group(Visibility::Hidden);
         tests.push(Test {
             name: format!("{} (hidden cases)", title(&t.task)),
@@ -160,5 +156,48 @@ pub fn gradescope(report: &GradeReport) -> Results {
         visibility: "visible",
         stdout_visibility: "hidden",
         tests,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grade::checks::score;
+    use crate::grade::credit::Credit;
+    use crate::grade::verdict::{CheckKind, CheckResult};
+
+    #[test]
+    fn partial_credit_reaches_gradescope_as_the_grader_scored_it() {
+        let mut values = CheckResult::new("values", CheckKind::Values);
+        (values.total, values.failed, values.weight) = (30, 4, 2.0);
+        let mut hidden = CheckResult::new("values (hidden cases)", CheckKind::Values);
+        (hidden.total, hidden.failed, hidden.visibility) = (24, 12, Visibility::Hidden);
+        let mut estimator = CheckResult::new("estimator", CheckKind::Estimator);
+        (estimator.total, estimator.passed) = (1, true);
+        let mut checks = vec![values, hidden, estimator];
+        Credit::PerCase.apply(&mut checks);
+        let (status, points) = score(TaskId::SmithG1, &checks);
+        assert_eq!(status, TaskStatus::Failed);
+        let expected = 6.0 * (2.0 * 26.0 / 30.0 + 0.5 + 1.0) / 4.0;
+        assert!(
+            (points - expected).abs() < 1e-9,
+            "{points} against {expected}"
+        );
+        let outcome = TaskOutcome {
+            task: "smith_g1".into(),
+            status,
+            points,
+            max_points: 6.0,
+            checks,
+            output: String::new(),
+            seconds: 0.0,
+        };
+        let tests = tests_of(&outcome);
+        let sum = total(tests.iter().map(|t| t.score));
+        assert!(
+            (sum - points).abs() < 1e-9,
+            "Gradescope {sum}, grader {points}"
+        );
+        assert!(tests.iter().all(|t| t.status == "failed"));
     }
 }
