@@ -450,3 +450,21 @@ fn a_quoted_number_is_text_not_a_number() {
     let text = format!("{CAMERA}shapes:\n  - sphere: {{center: [0, '1', 0], radius: 1}}\n");
     assert_error_at(&text, 3, 26, "found the text `1`");
 }
+
+#[test]
+fn a_megabyte_key_is_named_and_its_line_is_not_printed_whole() {
+    let key = "k".repeat(1 << 20);
+    let text = format!("camera:\n  fov: 40\n{key}: 1\n");
+    let e = error_of(&text);
+    let shown = e.to_string();
+    assert!(
+        shown.contains(&format!("line 3 is {} characters long", (1 << 20) + 3)),
+        "{}",
+        &shown[..shown.len().min(400)]
+    );
+    assert!(
+        shown.len() < 1000,
+        "the excerpt is a window, not the line: {} bytes",
+        shown.len()
+    );
+}

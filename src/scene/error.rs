@@ -114,10 +114,31 @@ fn excerpt(source: &str, line: u64, column: u64) -> Option<String> {
         .nth(usize::try_from(line).ok()?.checked_sub(1)?)?;
     let number = line.to_string();
     let pad = " ".repeat(number.len());
-    let caret_pad: String = text
+    let column = usize::try_from(column.saturating_sub(1)).ok()?;
+    // A long line is shown as a window around the column (a 1 MB key printed whole buries
+    // the message).
+    let length = text.chars().count();
+    let start = if length > MAX_EXCERPT {
+        column.saturating_sub(MAX_EXCERPT / 2)
+    } else {
+        0
+    };
+    let mut shown: String = text.chars().skip(start).take(MAX_EXCERPT).collect();
+    let mut caret_pad: String = text
         .chars()
-        .take(usize::try_from(column.saturating_sub(1)).ok()?)
+        .skip(start)
+        .take(column - start)
         .map(|c| if c == '\t' { '\t' } else { ' ' })
         .collect();
-    Some(format!("{pad} |\n{number} | {text}\n{pad} | {caret_pad}^"))
+    if start > 0 {
+        shown.insert(0, '…');
+        caret_pad.insert(0, ' ');
+    }
+    if start + MAX_EXCERPT < length {
+        shown.push('…');
+    }
+    Some(format!("{pad} |\n{number} | {shown}\n{pad} | {caret_pad}^"))
 }
+
+/// The most characters of a line an excerpt shows.
+const MAX_EXCERPT: usize = 100;

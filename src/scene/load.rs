@@ -92,10 +92,28 @@ fn yaml_error(file: &Path, text: &str, e: &serde_saphyr::Error) -> SceneError {
             .to_string(),
     };
     match e.location() {
-        Some(l) if l.line() > 0 => SceneError::at(file, text, l.line(), l.column(), message),
+        Some(l) if l.line() > 0 => {
+            let length = usize::try_from(l.line() - 1)
+                .ok()
+                .and_then(|n| text.lines().nth(n))
+                .map_or(0, |line| line.chars().count());
+            let message = if length > MAX_KEY {
+                format!(
+                    "{message} (line {} is {length} characters long: a YAML key may have at \
+                     most {MAX_KEY}, and no name or value of a scene is that long)",
+                    l.line()
+                )
+            } else {
+                message
+            };
+            SceneError::at(file, text, l.line(), l.column(), message)
+        }
         _ => SceneError::file(file, message),
     }
 }
+
+/// The longest key YAML allows without quotes (its implicit-key limit), in characters.
+const MAX_KEY: usize = 1024;
 
 /// What a scene file that breaches the YAML loader's limits (set against hostile input:
 /// billions of nodes, deep nesting) is told.
