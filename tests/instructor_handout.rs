@@ -136,6 +136,9 @@ fn cargo(dir: &Path, args: &[&str]) -> std::process::Output {
         .args(args)
         .current_dir(dir)
         .env("PBRLAB_STATE_DIR", dir.join(".state"))
+        // The handout builds in its own target folder, as on a student's machine (a shared
+        // one would mix its build-script outputs with the repository's).
+        .env_remove("CARGO_TARGET_DIR")
         .output()
         .expect("cargo runs")
 }

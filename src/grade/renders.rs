@@ -196,13 +196,15 @@ pub fn judge(
     rendered: Option<&ImageOutputs>,
     report_dir: Option<&Path>,
 ) -> CheckResult {
-    let fail = |message: String| {
+    // One case, the render; it failed with `failure`.
+    let failed = |failure: &dyn Fn(&mut CheckResult)| {
         let mut r = CheckResult::new(format!("image: {scene}"), super::verdict::CheckKind::Image);
         r.total = 1;
-        r.fail(message);
+        failure(&mut r);
         r.finish();
         r
     };
+    let fail = |message: String| failed(&|r: &mut CheckResult| r.fail(message.clone()));
     let reference = match stored_reference(scene) {
         Ok(Some(r)) => r,
         Ok(None) => return fail(format!("no stored reference render of {scene}")),
@@ -217,12 +219,7 @@ pub fn judge(
         Ok(Ok(r)) => r,
         Ok(Err(message)) => return fail(message.clone()),
         Err(p) => {
-            let mut r = fail(String::new());
-            r.failures.clear();
-            r.failed = 0;
-            r.fail_panic(&format!("rendering {scene}"), p);
-            r.finish();
-            return r;
+            return failed(&|r: &mut CheckResult| r.fail_panic(&format!("rendering {scene}"), p));
         }
     };
     let mut result = image_check::run(scene, stats, &reference, report_dir);

@@ -80,7 +80,7 @@ fn call<T: Tasks>(eval: fn(&T) -> Value, imp: &T) -> Ended {
 
 /// What a case gave, without the case's own (static) description: what a worker process
 /// sends back for one case.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct CaseResult {
     /// The value, when the task returned one.
     pub returned: Option<Returned>,
