@@ -62,6 +62,7 @@ pub mod autograder;
 pub mod bsdf;
 pub mod cli;
 pub mod converge;
+pub mod entropy;
 pub mod geometry;
 pub mod grade;
 pub mod handout;

@@ -222,11 +222,19 @@ fn submissions(results: &Path) -> Vec<(&'static str, Vec<(String, String)>)> {
     ]
 }
 
-fn write_submission(dir: &Path, files: &[(String, String)]) {
+/// The submissions of the end-to-end test.
+const NAMES: [&str; 4] = ["correct", "stub", "non_compiling", "hostile"];
+
+/// Writes the submission `name` into `dir`, its hostile file aimed at `results`.
+fn write_submission(dir: &Path, name: &str, results: &Path) {
+    let (_, files) = submissions(results)
+        .into_iter()
+        .find(|(n, _)| *n == name)
+        .unwrap();
     std::fs::create_dir_all(dir).unwrap();
     std::fs::write(dir.join("README.txt"), "not graded").unwrap();
-    for (name, text) in files {
-        let file = dir.join(name);
+    for (file, text) in files {
+        let file = dir.join(file);
         std::fs::create_dir_all(file.parent().unwrap()).unwrap();
         std::fs::write(file, text).unwrap();
     }
@@ -273,14 +281,13 @@ fn both_packages_grade_real_submissions_end_to_end() {
             .sum()
     };
     let mut scores = std::collections::BTreeMap::new();
-    for (name, _) in submissions(Path::new("")) {
+    for name in NAMES {
         let root = dir.path().join("autograder").join(name);
-        let files = &submissions(&root.join("results/results.json"))
-            .into_iter()
-            .find(|(n, _)| *n == name)
-            .unwrap()
-            .1;
-        write_submission(&root.join("submission"), files);
+        write_submission(
+            &root.join("submission"),
+            name,
+            &root.join("results/results.json"),
+        );
         let mut run = Command::new("bash");
         run.arg(gs.join("run_autograder"))
             .env("PBRLAB_AUTOGRADER_ROOT", &root)
@@ -343,14 +350,13 @@ fn both_packages_grade_real_submissions_end_to_end() {
     package("prairielearn", &pl);
     std::fs::remove_dir_all(pl.join("pbrlab")).unwrap();
     std::os::unix::fs::symlink(gs.join("pbrlab"), pl.join("pbrlab")).unwrap();
-    for (name, _) in submissions(Path::new("")) {
+    for name in NAMES {
         let root = dir.path().join("grade").join(name);
-        let files = &submissions(&root.join("results/results.json"))
-            .into_iter()
-            .find(|(n, _)| *n == name)
-            .unwrap()
-            .1;
-        write_submission(&root.join("student"), files);
+        write_submission(
+            &root.join("student"),
+            name,
+            &root.join("results/results.json"),
+        );
         let mut run = Command::new("bash");
         run.arg(pl.join("entrypoint.sh"))
             .env("PBRLAB_GRADE_ROOT", &root)

@@ -10,6 +10,7 @@
 
 use super::config::{self, Config};
 use super::schema::Service;
+use crate::entropy::random_u64;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
@@ -26,25 +27,6 @@ const QUESTION: &str = include_str!("templates/question.html");
 
 /// The folder under the package that holds the source tree.
 pub const SOURCE: &str = "pbrlab";
-
-/// Eight random bytes from the system.
-fn random_u64() -> u64 {
-    let mut bytes = [0u8; 8];
-    if std::fs::File::open("/dev/urandom")
-        .and_then(|mut f| std::io::Read::read_exact(&mut f, &mut bytes))
-        .is_ok()
-    {
-        return u64::from_le_bytes(bytes);
-    }
-    use std::hash::{BuildHasher, Hasher};
-    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
-    h.write_u128(
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_nanos()),
-    );
-    h.finish()
-}
 
 /// A random (version 4) UUID for the example question.
 fn uuid() -> String {

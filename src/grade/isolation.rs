@@ -402,17 +402,6 @@ fn explain(status: ExitStatus, stderr: &str, memory_limit: u64) -> String {
 
 /// A fresh nonce for one job: not guessable by code that cannot read the job.
 pub fn nonce() -> String {
-    use std::hash::{BuildHasher, Hasher};
-    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
-    h.write_u128(
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_nanos())
-            .unwrap_or(0),
-    );
-    h.write_u32(std::process::id());
-    let a = h.finish();
-    let mut h2 = std::collections::hash_map::RandomState::new().build_hasher();
-    h2.write_u64(a);
-    format!("{a:016x}{:016x}", h2.finish())
+    use crate::entropy::random_u64;
+    format!("{:016x}{:016x}", random_u64(), random_u64())
 }
