@@ -51,13 +51,7 @@ pub fn write(
     service: Service,
     hidden_seed: Option<u64>,
 ) -> anyhow::Result<Vec<PathBuf>> {
-    if out.exists()
-        && std::fs::read_dir(out)
-            .map(|mut d| d.next().is_some())
-            .unwrap_or(true)
-    {
-        bail!("{} exists and is not empty", out.display());
-    }
+    crate::handout::refuse_non_empty(out)?;
     let mut written = write_source(root, &out.join(SOURCE))?;
     let config = Config::new(hidden_seed.unwrap_or_else(random_u64));
     let settings = out.join(SOURCE).join(config::FILE);

@@ -37,17 +37,17 @@ pub struct Submission<'a> {
 }
 
 /// A graded submission, before it is written in a service's format.
-pub struct Graded {
+struct Graded {
     /// What was taken from the submission and what was ignored.
-    pub intake: Intake,
+    intake: Intake,
     /// The grade.
-    pub report: GradeReport,
+    report: GradeReport,
 }
 
 impl Submission<'_> {
-    /// Grades and writes the results file; returns the grade when there was one. Fails only
-    /// when the results file itself cannot be written.
-    pub fn run(&self) -> anyhow::Result<Option<Graded>> {
+    /// Grades and writes the results file. Fails only when the results file itself cannot
+    /// be written.
+    pub fn run(&self) -> anyhow::Result<()> {
         let start = Instant::now();
         let deadline = Duration::from_secs_f64(self.config.deadline.max(10.0));
         let written = Arc::new(Mutex::new(false));
@@ -73,8 +73,7 @@ impl Submission<'_> {
             Ok(graded) => self.results_json(graded, start),
             Err(e) => failed(self.service, &format!("{e:#}"), start),
         };
-        write_once(&written, self.results, &json)?;
-        Ok(graded.ok())
+        write_once(&written, self.results, &json)
     }
 
     fn grade(&self, time: Duration) -> anyhow::Result<Graded> {

@@ -83,7 +83,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 results: &r.results,
             }
             .run()
-            .map(|_| ())
         }
     }
 }

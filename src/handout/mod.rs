@@ -19,13 +19,7 @@ pub const README: &str = include_str!("README.md");
 /// Writes the handout of the repository at `root` into `dest`, which must not exist or be
 /// empty. Returns the files written, relative to `dest`.
 pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    if dest.exists()
-        && std::fs::read_dir(dest)
-            .map(|mut d| d.next().is_some())
-            .unwrap_or(true)
-    {
-        bail!("{} exists and is not empty", dest.display());
-    }
+    refuse_non_empty(dest)?;
     let root_abs = root
         .canonicalize()
         .with_context(|| format!("reading {}", root.display()))?;
@@ -51,4 +45,17 @@ pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
     written.push("README.md".into());
     written.sort();
     Ok(written)
+}
+
+/// Fails when `dir` exists and holds anything: a handout or a package is not written over
+/// another folder's files.
+pub fn refuse_non_empty(dir: &Path) -> anyhow::Result<()> {
+    if dir.exists()
+        && std::fs::read_dir(dir)
+            .map(|mut d| d.next().is_some())
+            .unwrap_or(true)
+    {
+        bail!("{} exists and is not empty", dir.display());
+    }
+    Ok(())
 }
