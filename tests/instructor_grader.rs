@@ -99,6 +99,51 @@ fn every_wrong_implementation_fails_its_own_task_and_only_it() {
     assert!(report.is_empty(), "{}", report.join("\n"));
 }
 
+/// The integrator bugs that only show in one configuration (a light not parallel to the
+/// surface, a sky, a point light, bounce weights above 1, a survival probability other than
+/// 1/2, a path that escapes after a bounce) fail the estimator of that configuration, and
+/// the message names it.
+#[test]
+fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
+    let inputs = inputs(1);
+    let cases = [
+        (
+            "the sky added again after an escape",
+            "a floor (ρ = 0.5) under a sky",
+        ),
+        ("a survival probability not capped at 1", "ρ = 1.25"),
+        ("the roulette test inverted", "ρ = 0.8"),
+        (
+            "the light's pdf converted with the cosine at the shading point",
+            "an upright square light seen at grazing angles",
+        ),
+        (
+            "an environment sample without its MIS weight",
+            "a square light under a constant sky",
+        ),
+        (
+            "point-light samples dropped",
+            "a square light and a point light",
+        ),
+    ];
+    let catalogue = wrong::catalogue();
+    for (name, configuration) in cases {
+        let w = catalogue
+            .iter()
+            .find(|w| w.name == name)
+            .unwrap_or_else(|| panic!("`{name}` is in the wrong catalogue"));
+        let student = student_tasks_for(w.task, ImplChoice::Student, &[]);
+        let (_, _, checks) = grade(&w.patch.only(student), w.task, &inputs[&w.task]);
+        let failed = messages(&checks);
+        assert!(
+            failed
+                .lines()
+                .any(|l| l.starts_with("estimator: ") && l.contains(configuration)),
+            "`{name}` should fail the estimator of {configuration}:\n{failed}"
+        );
+    }
+}
+
 #[test]
 fn every_correct_but_different_implementation_passes() {
     let inputs = inputs(1);

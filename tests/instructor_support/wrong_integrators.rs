@@ -21,6 +21,13 @@ enum PathFlaw {
     RouletteWithoutDivision,
     /// Emission added again where `mis` already counted it.
     EmissionTwice,
+    /// The sky added again when a bounce escapes, though `mis` already counted it.
+    SkyTwice,
+    /// A survival probability not capped at 1 (`q = max(weight)`): a bounce weight above 1
+    /// always survives and is still divided by q.
+    UncappedSurvival,
+    /// The roulette test inverted: the path ends with probability q instead of 1 − q.
+    InvertedRoulette,
 }
 
 fn path_variant(
@@ -36,7 +43,7 @@ fn path_variant(
     }
     let counted = segment.emission_counted && flaw != PathFlaw::EmissionTwice;
     let Some(hit) = &segment.hit else {
-        return if counted {
+        return if counted && flaw != PathFlaw::SkyTwice {
             Vec3::ZERO
         } else {
             scene.environment(segment.ray.dir)
@@ -63,8 +70,16 @@ fn path_variant(
     }
     let mut weight = bounce.weight;
     if scene.settings().roulette_applies(depth) {
-        let q = weight.max_element().min(0.95);
-        if q <= 0.0 || sampler.next_1d() >= q {
+        let q = match flaw {
+            PathFlaw::UncappedSurvival => weight.max_element(),
+            _ => weight.max_element().min(0.95),
+        };
+        let u = sampler.next_1d();
+        let ends = match flaw {
+            PathFlaw::InvertedRoulette => u < q,
+            _ => u >= q,
+        };
+        if q <= 0.0 || ends {
             return radiance;
         }
         if flaw != PathFlaw::RouletteWithoutDivision {
@@ -92,6 +107,13 @@ enum MisFlaw {
     /// Both weights use the light's pdf per unit area next to the BSDF's per solid angle
     /// (reading I1: unbiased, but the variance depends on the unit of length).
     MixedMeasures,
+    /// The area-to-solid-angle conversion with the cosine at the shading point instead of
+    /// at the light (equal only where the light is parallel to the surface).
+    CosineAtShadingPoint,
+    /// An environment light sample added without its MIS weight.
+    UnweightedSkySample,
+    /// Point-light samples dropped.
+    NoPointLights,
 }
 
 fn ratio(heuristic: Heuristic, from_light: bool, a: f32, b: f32) -> f32 {
@@ -116,23 +138,9 @@ fn mis_variant(
     let bsdf = scene.bsdf(hit);
     let mut radiance = Vec3::ZERO;
     if !bsdf.is_delta()
-        && let Some(LightSample::Area {
-            p,
-            n,
-            radiance: le,
-            pdf_area,
-        }) = scene.sample_light(hit.p, sampler)
+        && let Some(light) = scene.sample_light(hit.p, sampler)
     {
-        radiance += light_sample(
-            t,
-            scene,
-            hit,
-            &bsdf,
-            wo,
-            heuristic,
-            (p, n, le, pdf_area),
-            flaw,
-        );
+        radiance += light_sample(t, scene, hit, &bsdf, wo, heuristic, light, flaw);
     }
     let Some(s) = bsdf.sample(t, wo, sampler) else {
         return DirectLight {
@@ -142,16 +150,26 @@ fn mis_variant(
     };
     let ray = hit.spawn(s.wi);
     let next = scene.intersect(&ray);
-    if let Some(h) = &next {
-        let le = scene.emitted(h, -s.wi);
-        let cos_l = h.n.dot(s.wi).abs();
-        if le != Vec3::ZERO && cos_l > 0.0 {
-            let pdf_light = match flaw {
+    let (emitted, pdf_light) = match &next {
+        Some(h) => {
+            let le = scene.emitted(h, -s.wi);
+            let cos_l = h.n.dot(s.wi).abs();
+            let pdf = match flaw {
+                _ if le == Vec3::ZERO || cos_l <= 0.0 => 0.0,
                 MisFlaw::MixedMeasures => scene.light_pdf(h),
                 _ => scene.light_pdf(h) * h.t * h.t / cos_l,
             };
-            radiance += s.weight * le * ratio(heuristic, false, s.pdf, pdf_light);
+            (le, pdf)
         }
+        None => (scene.environment(s.wi), scene.environment_pdf(s.wi)),
+    };
+    if emitted != Vec3::ZERO {
+        let w = if s.delta {
+            1.0
+        } else {
+            ratio(heuristic, false, s.pdf, pdf_light)
+        };
+        radiance += s.weight * emitted * w;
     }
     DirectLight {
         radiance,
@@ -174,10 +192,43 @@ fn light_sample(
     bsdf: &Bsdf<'_>,
     wo: Vec3,
     heuristic: Heuristic,
-    light: (Vec3, Vec3, Vec3, f32),
+    light: LightSample,
     flaw: MisFlaw,
 ) -> Vec3 {
-    let (p, n, le, pdf_area) = light;
+    let (p, n, le, pdf_area) = match light {
+        LightSample::Area {
+            p,
+            n,
+            radiance,
+            pdf_area,
+        } => (p, n, radiance, pdf_area),
+        LightSample::Point { p, intensity, prob } => {
+            if flaw == MisFlaw::NoPointLights {
+                return Vec3::ZERO;
+            }
+            let d = p - hit.p;
+            let dist2 = d.length_squared();
+            let (ray, t_max) = hit.spawn_to(p);
+            if scene.occluded(&ray, t_max) {
+                return Vec3::ZERO;
+            }
+            return bsdf.eval(t, wo, d / dist2.sqrt()) * intensity / (dist2 * prob);
+        }
+        LightSample::Environment { wi, radiance, pdf } => {
+            if heuristic == Heuristic::Bsdf || pdf <= 0.0 {
+                return Vec3::ZERO;
+            }
+            if scene.occluded(&hit.spawn(wi), f32::INFINITY) {
+                return Vec3::ZERO;
+            }
+            let w = if flaw == MisFlaw::UnweightedSkySample {
+                1.0
+            } else {
+                ratio(heuristic, true, pdf, bsdf.pdf(t, wo, wi))
+            };
+            return bsdf.eval(t, wo, wi) * radiance * (w / pdf);
+        }
+    };
     if heuristic == Heuristic::Bsdf {
         return Vec3::ZERO;
     }
@@ -195,6 +246,7 @@ fn light_sample(
     }
     let pdf_light = match flaw {
         MisFlaw::MissingLightCosine => pdf_area * dist2,
+        MisFlaw::CosineAtShadingPoint => pdf_area * dist2 / hit.n.dot(wi).abs(),
         _ => pdf_area * dist2 / cos_l,
     };
     let pdf_in_weight = if flaw == MisFlaw::MixedMeasures {
@@ -292,6 +344,18 @@ pub fn catalogue() -> Vec<Variant> {
             p.path_trace =
                 Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::EmissionTwice))
         }),
+        wrong("the sky added again after an escape", PathTrace, |p| {
+            p.path_trace =
+                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::SkyTwice))
+        }),
+        wrong("a survival probability not capped at 1", PathTrace, |p| {
+            p.path_trace =
+                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::UncappedSurvival))
+        }),
+        wrong("the roulette test inverted", PathTrace, |p| {
+            p.path_trace =
+                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::InvertedRoulette))
+        }),
         wrong("the sheet's G without the cosine at the light", Mis, |p| {
             p.mis = Some(|t, s, h, wo, he, sa| {
                 mis_variant(t, s, h, wo, he, sa, MisFlaw::MissingLightCosine)
@@ -303,6 +367,24 @@ pub fn catalogue() -> Vec<Variant> {
         wrong("the sheet's mixed pdf measures in the weights", Mis, |p| {
             p.mis =
                 Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::MixedMeasures))
+        }),
+        wrong(
+            "the light's pdf converted with the cosine at the shading point",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::CosineAtShadingPoint)
+                })
+            },
+        ),
+        wrong("an environment sample without its MIS weight", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::UnweightedSkySample)
+            })
+        }),
+        wrong("point-light samples dropped", Mis, |p| {
+            p.mis =
+                Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLights))
         }),
         wrong("the sheet's reused random numbers", DeltaTracking, |p| {
             p.delta_tracking = Some(|m, r, tm, n, s| {

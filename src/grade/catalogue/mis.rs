@@ -1,13 +1,19 @@
 //! The estimators of `mis`: the errata's direct-light scene, where the answer is an exact
-//! integral, with and without an occluder, for every weighting.
+//! integral, with and without an occluder, for every weighting; and the configurations the
+//! errata's scene never shows: a light seen at a grazing angle (the cosine at the light
+//! differs from the one at the shading point), a sky next to the square light (an
+//! environment sample needs its MIS weight too) and a point light (a light no BSDF sample
+//! can hit).
 
 use super::EstimatorSpec;
+use super::polygon::projected_solid_angle;
 use crate::geometry::Ray;
 use crate::integrator::Heuristic;
 use crate::sampling::Sampler;
 use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::Tasks;
 use glam::Vec3;
+use std::f64::consts::PI;
 use std::path::Path;
 
 /// The errata's exact direct light without the occluder (scene A).
@@ -15,39 +21,131 @@ pub const OPEN: f64 = 0.067_482_93;
 /// The errata's exact direct light with the occluder (scene B).
 pub const OCCLUDED: f64 = 0.009_195_30;
 
-/// A Lambertian floor (albedo 0.8) at z = 0 lit by a one-sided unit square of radiance 1 at
-/// z = 1 (x ∈ [0.5, 1.5], y ∈ [−0.5, 0.5], facing down); with `occluder`, a black strip at
-/// z = 0.5 (x ∈ [0.2, 0.6], y ∈ [−1, 1]) shades most of it. Every length is multiplied by
-/// `scale`, which must not change any radiance.
-fn scene(occluder: bool, scale: f32) -> Scene {
+/// Albedo of the floor.
+const ALBEDO: f64 = 0.8;
+/// Radiance of the sky in [`Lighting::Sky`].
+const SKY: f64 = 0.5;
+/// Position and intensity of the point light in [`Lighting::PointLight`].
+const POINT: ([f32; 3], f64) = ([-0.4, 0.2, 0.8], 0.5);
+
+/// The errata's square light: a one-sided unit square of radiance 1 at z = 1 facing down.
+const SQUARE: [Vec3; 4] = [
+    Vec3::new(0.5, -0.5, 1.0),
+    Vec3::new(1.5, -0.5, 1.0),
+    Vec3::new(1.5, 0.5, 1.0),
+    Vec3::new(0.5, 0.5, 1.0),
+];
+/// A unit square of radiance 1 standing upright at x = 1 and facing the origin: seen from
+/// the origin, its lower edge lies 3° above the horizon, and the cosine at the light
+/// (`1/r`) is far from the cosine at the shading point (`z/r`).
+const UPRIGHT: [Vec3; 4] = [
+    Vec3::new(1.0, -0.5, 0.05),
+    Vec3::new(1.0, 0.5, 0.05),
+    Vec3::new(1.0, 0.5, 1.05),
+    Vec3::new(1.0, -0.5, 1.05),
+];
+
+/// What lights the floor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Lighting {
+    /// The errata's square light alone (scene A).
+    Open,
+    /// The square light behind a black strip at z = 0.5 (scene B).
+    Occluded,
+    /// The upright square instead of the errata's.
+    Upright,
+    /// The square light under a sky of constant radiance [`SKY`], which the square hides
+    /// where it stands.
+    Sky,
+    /// The square light and a point light.
+    PointLight,
+}
+
+impl Lighting {
+    /// What the check's name calls it.
+    fn describe(self) -> &'static str {
+        match self {
+            Lighting::Open => "a square light, open",
+            Lighting::Occluded => "a square light, occluded",
+            Lighting::Upright => "an upright square light seen at grazing angles",
+            Lighting::Sky => "a square light under a constant sky",
+            Lighting::PointLight => "a square light and a point light",
+        }
+    }
+
+    /// The exact direct light leaving the floor at the origin upwards: `ρ/π · E`, with the
+    /// irradiance `E` from Lambert's polygon formula (the errata's values for scenes A and B).
+    fn analytic(self) -> f64 {
+        let square = projected_solid_angle(&SQUARE);
+        let irradiance = match self {
+            Lighting::Open => return OPEN,
+            Lighting::Occluded => return OCCLUDED,
+            Lighting::Upright => projected_solid_angle(&UPRIGHT),
+            Lighting::Sky => square + SKY * (PI - square),
+            Lighting::PointLight => {
+                let (p, intensity) = POINT;
+                let d2 = Vec3::from(p).length_squared() as f64;
+                square + intensity * p[2] as f64 / d2.sqrt() / d2
+            }
+        };
+        ALBEDO / PI * irradiance
+    }
+}
+
+/// A Lambertian floor (albedo [`ALBEDO`]) at z = 0 under `lighting`. Every length is
+/// multiplied by `scale`, which must not change any radiance.
+fn scene(lighting: Lighting, scale: f32) -> Scene {
     let s = |x: f32| x * scale;
+    let quad = |v: &[Vec3; 4], what: &str| {
+        let (o, e1, e2) = (v[0] * scale, (v[3] - v[0]) * scale, (v[1] - v[0]) * scale);
+        format!(
+            "  - quad: {{origin: [{}, {}, {}], edge1: [{}, {}, {}], edge2: [{}, {}, {}], {what}}}\n",
+            o.x, o.y, o.z, e1.x, e1.y, e1.z, e2.x, e2.y, e2.z
+        )
+    };
     let mut text = format!(
         "camera: {{eye: [0, 0, {e}], target: [0, 0, 0], up: [0, 1, 0], fov: 60, width: 4, height: 4}}
 render: {{spp: 1, max_depth: 2, strategy: mis, heuristic: power, seed: 0}}
 materials:
-  floor: {{diffuse: {{albedo: 0.8}}}}
+  floor: {{diffuse: {{albedo: {ALBEDO}}}}}
   black: {{diffuse: {{albedo: 0}}}}
 shapes:
   - quad: {{origin: [{a}, {a}, 0], edge1: [{b}, 0, 0], edge2: [0, {b}, 0], material: floor}}
-  - quad: {{origin: [{lx}, {ly}, {lz}], edge1: [0, {l}, 0], edge2: [{l}, 0, 0], emission: 1}}
 ",
         e = s(3.0),
         a = s(-3.0),
         b = s(6.0),
-        lx = s(0.5),
-        ly = s(-0.5),
-        lz = s(1.0),
-        l = s(1.0),
     );
-    if occluder {
-        text += &format!(
-            "  - quad: {{origin: [{ox}, {oy}, {oz}], edge1: [{w}, 0, 0], edge2: [0, {h}, 0], material: black}}\n",
-            ox = s(0.2),
-            oy = s(-1.0),
-            oz = s(0.5),
-            w = s(0.4),
-            h = s(2.0),
-        );
+    let light = if lighting == Lighting::Upright {
+        &UPRIGHT
+    } else {
+        &SQUARE
+    };
+    text += &quad(light, "emission: 1");
+    match lighting {
+        Lighting::Occluded => {
+            text += &format!(
+                "  - quad: {{origin: [{ox}, {oy}, {oz}], edge1: [{w}, 0, 0], edge2: [0, {h}, 0], material: black}}\n",
+                ox = s(0.2),
+                oy = s(-1.0),
+                oz = s(0.5),
+                w = s(0.4),
+                h = s(2.0),
+            )
+        }
+        Lighting::Sky => text += &format!("lights:\n  - environment: {{radiance: {SKY}}}\n"),
+        Lighting::PointLight => {
+            let ([x, y, z], intensity) = POINT;
+            // Intensity scales with area, so that the irradiance at the floor does not change.
+            text += &format!(
+                "lights:\n  - point: {{position: [{}, {}, {}], intensity: {}}}\n",
+                s(x),
+                s(y),
+                s(z),
+                intensity * (scale as f64).powi(2)
+            );
+        }
+        Lighting::Open | Lighting::Upright => {}
     }
     Scene::from_yaml(
         Path::new("<grader mis scene>"),
@@ -78,38 +176,41 @@ fn scene_scale(scene: &Scene) -> f32 {
     scene.camera().eye.z / 3.0
 }
 
-fn spec<'a, T: Tasks>(
-    t: &'a T,
-    occluder: bool,
+fn spec<T: Tasks>(
+    t: &T,
+    lighting: Lighting,
     scale: f32,
     heuristic: Heuristic,
-) -> EstimatorSpec<'a> {
-    let (analytic, which) = if occluder {
-        (OCCLUDED, "occluded")
-    } else {
-        (OPEN, "open")
-    };
+) -> EstimatorSpec<'_> {
     let units = if scale == 1.0 {
         String::new()
     } else {
         format!(", lengths × {scale}")
     };
     EstimatorSpec {
-        name: format!("direct light from a square light, {which}, {heuristic:?} weights{units}")
-            .to_lowercase(),
-        analytic,
+        name: format!(
+            "direct light from {}, {heuristic:?} weights{units}",
+            lighting.describe()
+        )
+        .to_lowercase(),
+        analytic: lighting.analytic(),
         samples: 100_000,
-        estimate: direct_light(t, scene(occluder, scale), heuristic),
+        estimate: direct_light(t, scene(lighting, scale), heuristic),
     }
 }
 
 pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
+    use Lighting::*;
     vec![
-        spec(t, false, 1.0, Heuristic::Power),
-        spec(t, false, 1.0, Heuristic::Balance),
-        spec(t, true, 1.0, Heuristic::Power),
-        spec(t, true, 1.0, Heuristic::Light),
-        spec(t, true, 1.0, Heuristic::Bsdf),
+        spec(t, Open, 1.0, Heuristic::Power),
+        spec(t, Open, 1.0, Heuristic::Balance),
+        spec(t, Occluded, 1.0, Heuristic::Power),
+        spec(t, Occluded, 1.0, Heuristic::Light),
+        spec(t, Occluded, 1.0, Heuristic::Bsdf),
+        spec(t, Upright, 1.0, Heuristic::Light),
+        spec(t, Upright, 1.0, Heuristic::Power),
+        spec(t, Sky, 1.0, Heuristic::Power),
+        spec(t, PointLight, 1.0, Heuristic::Power),
     ]
 }
 
@@ -117,7 +218,23 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
 /// change (MIS weights that mix a pdf per unit area with one per solid angle do).
 pub fn unit_pairs<T: Tasks>(t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
     vec![(
-        spec(t, false, 1.0, Heuristic::Balance),
-        spec(t, false, 1000.0, Heuristic::Balance),
+        spec(t, Lighting::Open, 1.0, Heuristic::Balance),
+        spec(t, Lighting::Open, 1000.0, Heuristic::Balance),
     )]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_lighting_is_a_valid_scene_at_both_scales() {
+        use Lighting::*;
+        for lighting in [Open, Occluded, Upright, Sky, PointLight] {
+            for scale in [1.0, 1000.0] {
+                let scene = scene(lighting, scale);
+                assert!((scene_scale(&scene) - scale).abs() < 1e-3 * scale);
+            }
+        }
+    }
 }
