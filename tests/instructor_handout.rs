@@ -25,9 +25,13 @@ const WINDOW: usize = 4;
 /// into the handout brings one along, while a guard or two in common with framework code
 /// (an early return when a cosine is negative) does not.
 fn solution_windows() -> Vec<String> {
+    // The exercises as shipped, whatever the working copy holds.
     let mut shared = String::new();
-    for entry in std::fs::read_dir(root().join("exercises")).unwrap() {
-        shared += &std::fs::read_to_string(entry.unwrap().path()).unwrap();
+    for task in pbrlab::worksheet::TaskId::ALL {
+        shared += &pbrlab::handout::stubs::shipped(root(), task).unwrap();
+    }
+    for other in ["lib.rs", "build.rs"] {
+        shared += &std::fs::read_to_string(root().join("exercises").join(other)).unwrap();
     }
     let mut windows = Vec::new();
     for entry in std::fs::read_dir(root().join("solutions")).unwrap() {
@@ -111,8 +115,11 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
         windows.iter().any(|w| copied.contains(w.as_str())),
         "the comparison finds copied code"
     );
+    // The handout as written (its exercises are the committed stubs).
+    let handout = tempfile::tempdir().unwrap();
+    pbrlab::handout::write(root(), handout.path()).expect("handout written");
     for name in names.iter().filter(|n| n.ends_with(".rs")) {
-        let text = std::fs::read_to_string(root().join(name)).unwrap();
+        let text = std::fs::read_to_string(handout.path().join(name)).unwrap();
         let code = code_lines(&text).join("\n");
         for window in &windows {
             assert!(
@@ -182,6 +189,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
     let tmp = tempfile::tempdir().unwrap();
     let dir: PathBuf = tmp.path().join("student");
     pbrlab::handout::write(root(), &dir).expect("handout written");
+    pbrlab::handout::stubs::commit(&dir).expect("the handout committed");
     let test = cargo(&dir, &["test", "--release"]);
     assert!(
         test.status.success(),
@@ -243,4 +251,93 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         !grade.contains("mixed") && !grade.contains("- reference"),
         "{grade}"
     );
+    watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(&dir);
+    // A student's own work never makes the README's test command fail: the tests about
+    // the stubs check the files that are still stubs.
+    for task in ["reflect", "smith_g1", "fresnel_schlick", "cosine_sample"] {
+        let file = format!("{task}.rs");
+        std::fs::copy(
+            root().join("solutions").join(&file),
+            dir.join("exercises").join(&file),
+        )
+        .unwrap();
+    }
+    let test = cargo_outside_ci(&dir, &["test", "--release"]);
+    assert!(
+        test.status.success(),
+        "with four exercises written: {}",
+        String::from_utf8_lossy(&test.stderr)
+    );
+}
+
+/// `cargo` in `dir` as a student runs it (CI's variable insists on untouched stubs).
+fn cargo_outside_ci(dir: &Path, args: &[&str]) -> std::process::Output {
+    Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+        .args(args)
+        .current_dir(dir)
+        .env("PBRLAB_STATE_DIR", dir.join(".state"))
+        .env_remove("CARGO_TARGET_DIR")
+        .env_remove("CI")
+        .output()
+        .expect("cargo runs")
+}
+
+/// `pbrlab watch reflect` in a pseudo-terminal of the built handout at `dir`: the first
+/// table, the next hint on `h`, a save that rebuilds (cargo's progress shown) and
+/// regrades to full marks, a save that does not compile (the compiler's message and
+/// COMPILE ERROR in the table), and `q` ending the watch.
+fn watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(dir: &Path) {
+    let mut command = Command::new(dir.join("target/release/pbrlab"));
+    command
+        .args(["watch", "reflect", "--poll-ms", "100"])
+        .current_dir(dir)
+        .env("PBRLAB_STATE_DIR", dir.join(".watch-state"))
+        .env_remove("CARGO_TARGET_DIR");
+    let mut watch = rexpect::session::spawn_command(command, Some(180_000)).expect("a pty");
+    expect(
+        &mut watch,
+        "at the start",
+        &["not attempted", "h: next hint for reflect"],
+    );
+    key(&mut watch, "h");
+    expect(&mut watch, "after h", &["hint 1/"]);
+    let file = dir.join("exercises/reflect.rs");
+    std::fs::copy(root().join("solutions/reflect.rs"), &file).unwrap();
+    expect(
+        &mut watch,
+        "after a save",
+        &[
+            "rebuilding and regrading",
+            "Compiling pbrlab-exercises",
+            "5.0/5",
+        ],
+    );
+    std::fs::write(&file, "pub fn reflect(wo: Vec3, n: Vec3) -> Vec3 {\n").unwrap();
+    expect(
+        &mut watch,
+        "after a broken save",
+        &[
+            "rebuilding and regrading",
+            "exercises/reflect.rs",
+            "COMPILE ERROR",
+            "h: next hint for reflect",
+        ],
+    );
+    key(&mut watch, "q");
+    watch.exp_eof().expect("q ends the watch");
+}
+
+/// Waits for each of `what` in turn in the watch's output.
+fn expect(watch: &mut rexpect::session::PtySession, when: &str, what: &[&str]) {
+    for what in what {
+        watch
+            .exp_string(what)
+            .unwrap_or_else(|e| panic!("{when}, watch never printed `{what}`: {e}"));
+    }
+}
+
+/// Presses `key` in the watch's terminal.
+fn key(watch: &mut rexpect::session::PtySession, key: &str) {
+    watch.send(key).unwrap();
+    watch.flush().unwrap();
 }

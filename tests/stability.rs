@@ -2,6 +2,7 @@
 //! stubs are "not attempted" everywhere, each deliberately naive function fails exactly
 //! the cases it should with the verdict it should, and hangs and panics are reported.
 
+mod shipped_stubs;
 #[cfg(feature = "solutions")]
 mod stability_support;
 
@@ -56,7 +57,12 @@ fn table(outcomes: &[Outcome]) -> String {
 
 #[test]
 fn stubs_are_not_attempted_everywhere() {
-    let outcomes = run_all(Student, &cases(), TIMEOUT);
+    let untouched = shipped_stubs::untouched();
+    let stub_cases: Vec<Case<_>> = cases()
+        .into_iter()
+        .filter(|c| untouched.contains(&c.task))
+        .collect();
+    let outcomes = run_all(Student, &stub_cases, TIMEOUT);
     let other: Vec<Outcome> = outcomes
         .into_iter()
         .filter(|o| o.verdict != Verdict::NotAttempted)

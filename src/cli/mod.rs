@@ -6,6 +6,7 @@ mod grade;
 mod grade_class;
 mod handout;
 mod hint;
+mod keys;
 mod needs;
 mod rebuild;
 pub mod render;

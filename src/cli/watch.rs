@@ -1,3 +1,5 @@
+use crate::grade::verdict::TaskStatus;
+use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -49,7 +51,49 @@ fn regrade(exe: &Path, tasks: &[String]) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Regrades every time a file in `exercises/` is saved.
+/// The task whose hint `h` shows: the task of the file saved last, else the first task
+/// named on the command line, else the first task in worksheet order whose latest grade
+/// is not full marks.
+fn hint_task(saved: Option<TaskId>, named: &[String]) -> TaskId {
+    saved
+        .or_else(|| named.iter().find_map(|n| TaskId::parse(n).ok()))
+        .or_else(|| {
+            let progress = crate::grade::history::load_progress();
+            TaskId::ALL.into_iter().find(|t| {
+                progress
+                    .get(t.name())
+                    .is_none_or(|g| g.outcome.status != TaskStatus::Passed)
+            })
+        })
+        .unwrap_or(TaskId::ALL[0])
+}
+
+/// The task of the most recently modified exercise file among those that changed.
+fn saved_task(
+    before: &BTreeMap<PathBuf, SystemTime>,
+    now: &BTreeMap<PathBuf, SystemTime>,
+) -> Option<TaskId> {
+    now.iter()
+        .filter(|(path, time)| before.get(*path) != Some(time))
+        .filter_map(|(path, time)| {
+            let stem = path.file_stem()?.to_str()?;
+            let task = TaskId::ALL.into_iter().find(|t| t.name() == stem)?;
+            Some((task, *time))
+        })
+        .max_by_key(|(_, time)| *time)
+        .map(|(task, _)| task)
+}
+
+/// Prints what the keys do.
+fn prompt(exercises: &Path, hint_for: TaskId) {
+    println!(
+        "\nWatching {} — save a file to regrade.\n  h: next hint for {hint_for}   r: regrade   q: quit",
+        exercises.display()
+    );
+}
+
+/// Regrades every time a file in `exercises/` is saved; h shows the next hint, r regrades,
+/// q (or Ctrl-C) stops.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let root = crate::repository_root();
     let exercises = root.join("exercises");
@@ -60,30 +104,47 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     // deleted one.
     let exe = std::env::current_exe().context("locating this binary")?;
     let poll = Duration::from_millis(args.poll_ms.max(50));
+    let keys = super::keys::Keys::start();
     let mut seen = snapshot(&exercises);
+    let mut saved = None;
     regrade(&exe, &args.tasks)?;
-    println!(
-        "\nWatching {} — save a file to regrade, Ctrl-C to stop.",
-        exercises.display()
-    );
+    prompt(&exercises, hint_task(saved, &args.tasks));
     loop {
-        std::thread::sleep(poll);
+        let key = keys.next(poll);
         let now = snapshot(&exercises);
+        let regrade_now = match key {
+            Some('q') => return Ok(()),
+            Some('h') => {
+                let task = hint_task(saved, &args.tasks);
+                println!();
+                super::hint::run(super::hint::Args {
+                    task: task.name().into(),
+                    level: None,
+                    all: false,
+                })?;
+                prompt(&exercises, task);
+                false
+            }
+            Some('r') => true,
+            _ => now != seen,
+        };
+        if !regrade_now {
+            continue;
+        }
         if now != seen {
             // Editors often write a file in several steps; let the save settle.
             std::thread::sleep(poll);
-            seen = snapshot(&exercises);
-            // Clear the screen now: unflushed, the escape went out after the new table and
-            // erased it.
-            print!("\x1b[2J\x1b[H");
-            println!("{} changed: rebuilding and regrading…", exercises.display());
-            std::io::Write::flush(&mut std::io::stdout())?;
-            regrade(&exe, &args.tasks)?;
-            println!(
-                "\nWatching {} — save a file to regrade, Ctrl-C to stop.",
-                exercises.display()
-            );
         }
+        let settled = snapshot(&exercises);
+        saved = saved_task(&seen, &settled).or(saved);
+        seen = settled;
+        // Clear the screen now: unflushed, the escape went out after the new table and
+        // erased it.
+        print!("\x1b[2J\x1b[H");
+        println!("{}: rebuilding and regrading…", exercises.display());
+        std::io::Write::flush(&mut std::io::stdout())?;
+        regrade(&exe, &args.tasks)?;
+        prompt(&exercises, hint_task(saved, &args.tasks));
     }
 }
 
@@ -113,5 +174,30 @@ mod tests {
             2,
             "files in subfolders count too"
         );
+    }
+
+    #[test]
+    fn the_hint_follows_the_task_file_saved_last() {
+        let t0 = SystemTime::UNIX_EPOCH + Duration::from_secs(100);
+        let later = t0 + Duration::from_secs(5);
+        let before: BTreeMap<PathBuf, SystemTime> = [
+            ("exercises/smith_g1.rs", t0),
+            ("exercises/reflect.rs", t0),
+            ("exercises/notes.rs", t0),
+        ]
+        .into_iter()
+        .map(|(p, t)| (PathBuf::from(p), t))
+        .collect();
+        let mut now = before.clone();
+        assert_eq!(saved_task(&before, &now), None);
+        now.insert("exercises/smith_g1.rs".into(), later);
+        now.insert("exercises/notes.rs".into(), later + Duration::from_secs(1));
+        // notes.rs is no task's file: the task saved last is smith_g1.
+        assert_eq!(saved_task(&before, &now), Some(TaskId::SmithG1));
+        assert_eq!(
+            hint_task(Some(TaskId::SmithG1), &["reflect".into()]),
+            TaskId::SmithG1
+        );
+        assert_eq!(hint_task(None, &["reflect".into()]), TaskId::Reflect);
     }
 }

@@ -2,9 +2,10 @@
 //!
 //! The handout is this repository without the solutions and without anything that
 //! reveals them ([`manifest`] decides what goes in), with its own README (the student
-//! workflow) and a Cargo.toml whose default features leave the solutions out. It builds,
-//! renders what the student has written, and grades the public cases from the stored
-//! expected data.
+//! workflow) and a Cargo.toml whose default features leave the solutions out. Its exercise
+//! files are the shipped stubs as committed ([`stubs::shipped`]), not whatever the
+//! instructor's working copy holds. It builds, renders what the student has written, and
+//! grades the public cases from the stored expected data.
 
 pub mod manifest;
 pub mod stubs;
@@ -36,7 +37,12 @@ pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
         if let Some(dir) = to.parent() {
             std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
         }
-        std::fs::copy(&from, &to).with_context(|| format!("copying {}", file.display()))?;
+        match committed_stub(&root_abs, file) {
+            Some(stub) => write_atomic(&to, stub.as_bytes())?,
+            None => {
+                std::fs::copy(&from, &to).with_context(|| format!("copying {}", file.display()))?;
+            }
+        }
         written.push(file.clone());
     }
     write_atomic(&dest_abs.join("Cargo.toml"), manifest.cargo_toml.as_bytes())?;
@@ -45,6 +51,19 @@ pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
     written.push("README.md".into());
     written.sort();
     Ok(written)
+}
+
+/// The committed stub when `file` is a task's exercise file (`exercises/<task>.rs`) and git
+/// has it; `None` for every other file.
+fn committed_stub(root: &Path, file: &Path) -> Option<String> {
+    if file.parent() != Some(Path::new("exercises")) {
+        return None;
+    }
+    let stem = file.file_stem()?.to_str()?;
+    let task = crate::worksheet::TaskId::ALL
+        .into_iter()
+        .find(|t| t.name() == stem)?;
+    stubs::shipped(root, task).ok()
 }
 
 /// Fails when `dir` exists and holds anything: a handout or a package is not written over

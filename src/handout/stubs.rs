@@ -65,12 +65,25 @@ pub fn shipped(root: &Path, task: TaskId) -> anyhow::Result<String> {
     String::from_utf8(out.stdout).context("the shipped stub is not UTF-8")
 }
 
+/// `exercises/<task>.rs` in the repository at `root`.
+fn exercise_file(root: &Path, task: TaskId) -> PathBuf {
+    root.join("exercises").join(format!("{}.rs", task.name()))
+}
+
+/// Whether `exercises/<task>.rs` in the repository at `root` is still the shipped stub;
+/// `None` where that cannot be told (no git, no repository, no file).
+pub fn unchanged(root: &Path, task: TaskId) -> Option<bool> {
+    let stub = shipped(root, task).ok()?;
+    let current = std::fs::read_to_string(exercise_file(root, task)).ok()?;
+    Some(current == stub)
+}
+
 /// Puts the shipped stub of `task` back in `root`'s `exercises/`, after copying the
 /// student's version into the folder `keep`. Returns where that copy went, or `None` when
 /// the file already was the stub.
 pub fn reset(root: &Path, task: TaskId, keep: &Path) -> anyhow::Result<Option<PathBuf>> {
     let stub = shipped(root, task)?;
-    let file = root.join("exercises").join(format!("{}.rs", task.name()));
+    let file = exercise_file(root, task);
     let current = std::fs::read_to_string(&file).unwrap_or_default();
     if current == stub {
         return Ok(None);
