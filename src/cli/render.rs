@@ -2,12 +2,14 @@ use crate::grade::isolation::Launcher;
 use crate::grade::sandbox::{self, Policy, Protections};
 use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, probe_student, student};
 use crate::panics::QuietPanics;
-use crate::render::{self, Film, RenderOptions, RenderOutput, output, raycast};
+use crate::render::checkpoint::{self, Origin};
+use crate::render::{self, RenderOptions, RenderOutput, RenderState, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::Tasks;
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 /// The scene `pbrlab render` renders when none is given.
 pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
@@ -21,9 +23,18 @@ pub struct Args {
     /// reference where this build has it, otherwise yours).
     #[arg(long = "impl", value_enum)]
     pub implementation: Option<ImplChoice>,
-    /// Samples per pixel (overrides the scene's).
+    /// Samples per pixel (overrides the scene's; with --resume, the new total).
     #[arg(long)]
     pub spp: Option<u32>,
+    /// Continue the render that left its checkpoint beside the output
+    /// (`renders/SCENE.checkpoint`, saved after every pass): killed or finished with fewer
+    /// samples, it goes on to --spp and gives the image an uninterrupted render gives.
+    #[arg(long)]
+    pub resume: bool,
+    /// Start no new pass after this much wall time (`90s`, `10m`, `2h`; a bare number is
+    /// seconds): the image then has the samples that fitted, and --resume can add more.
+    #[arg(long, value_parser = parse_duration)]
+    pub time: Option<Duration>,
     /// Seed (overrides the scene's).
     #[arg(long)]
     pub seed: Option<u64>,
@@ -42,6 +53,29 @@ pub struct Args {
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
+}
+
+/// A duration as `--time` takes it: a number of seconds, or one with the unit s, m or h.
+fn parse_duration(text: &str) -> Result<Duration, String> {
+    let text = text.trim();
+    let (number, unit) = match text.char_indices().last() {
+        Some((i, c)) if c.is_ascii_alphabetic() => (&text[..i], c),
+        _ => (text, 's'),
+    };
+    let scale = match unit {
+        's' => 1.0,
+        'm' => 60.0,
+        'h' => 3600.0,
+        _ => return Err(format!("`{text}`: the units are s, m and h")),
+    };
+    let value: f64 = number
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a duration such as 90s, 10m or 2h"))?;
+    if !(value.is_finite() && value > 0.0) {
+        return Err(format!("`{text}`: a duration must be positive"));
+    }
+    Duration::try_from_secs_f64(value * scale).map_err(|e| format!("`{text}`: {e}"))
 }
 
 /// Finds the scene file: as given, or the default scene (also looked for beside the
@@ -171,6 +205,44 @@ pub fn run(args: Args) -> Result<()> {
             crate::implementation::mixed(mine)
         }
     };
+    // What a checkpoint must match to be continued, and the state it holds (read now:
+    // a sandboxed render reads nothing).
+    let origin = Origin {
+        scene: std::fs::read_to_string(&path)
+            .with_context(|| format!("reading {}", path.display()))?,
+        seed: scene.settings().seed,
+        settings: format!(
+            "{:?}",
+            // The seed is compared on its own; the target spp may grow.
+            crate::scene::RenderSettings {
+                spp: 0,
+                seed: 0,
+                ..*scene.settings()
+            }
+        ),
+        implementation: format!("{choice:?}").to_lowercase(),
+        width: scene.camera().width,
+        height: scene.camera().height,
+    };
+    let checkpoint_path = checkpoint::path_for(&output_path);
+    let start = if args.resume && checkpoint_path.is_file() {
+        let state = checkpoint::load(&checkpoint_path, &origin)?;
+        eprintln!(
+            "resuming {} at {}/{} spp",
+            checkpoint_path.display(),
+            state.spp_done,
+            scene.settings().spp
+        );
+        state
+    } else {
+        if args.resume {
+            eprintln!(
+                "no checkpoint at {}: starting afresh",
+                checkpoint_path.display()
+            );
+        }
+        RenderState::new(origin.width, origin.height, origin.seed)
+    };
     if choice != ImplChoice::Reference {
         // From here on this process runs student code: it may write the image and nothing
         // else (the scene is loaded, the probes ran in workers, no thread exists yet).
@@ -187,9 +259,11 @@ pub fn run(args: Args) -> Result<()> {
     let job = Job {
         scene: &scene,
         output: &output_path,
+        checkpoint: (&checkpoint_path, &origin),
         progress: !args.quiet,
+        time_limit: args.time,
     };
-    let out = pool.install(|| job.run(&table))?;
+    let out = pool.install(|| job.run(&table, start))?;
     let s = &out.stats;
     if s.rejected_samples > 0 {
         eprintln!(
@@ -240,19 +314,25 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// One render from the command line: progress, checkpoints after passes, panics reported.
+/// One render from the command line: progress, the image and a checkpoint saved after
+/// every pass, panics reported.
 struct Job<'a> {
     scene: &'a Scene,
     output: &'a Path,
+    checkpoint: (&'a Path, &'a Origin),
     progress: bool,
+    time_limit: Option<Duration>,
 }
 
 impl Job<'_> {
-    fn run<T: Tasks>(&self, t: &T) -> Result<RenderOutput> {
+    fn run<T: Tasks>(&self, t: &T, start: RenderState) -> Result<RenderOutput> {
         // Saving costs milliseconds and passes double in length, so every pass is saved:
-        // an interrupted render keeps its last complete pass.
-        let checkpoint = |film: &Film| {
-            if let Err(e) = output::write_both(self.output, &film.mean()) {
+        // an interrupted render keeps its last complete pass, and can continue from it.
+        let (checkpoint_path, origin) = self.checkpoint;
+        let save = |state: &RenderState| {
+            let saved = output::write_both(self.output, &state.film.mean())
+                .and_then(|_| checkpoint::save(checkpoint_path, origin, state));
+            if let Err(e) = saved {
                 eprintln!("warning: could not save the current estimate: {e:#}");
             }
         };
@@ -260,9 +340,10 @@ impl Job<'_> {
             spp: self.scene.settings().spp,
             seed: self.scene.settings().seed,
             progress: self.progress,
-            on_pass: Some(&checkpoint),
+            time_limit: self.time_limit,
+            on_pass: Some(&save),
         };
-        let out = catch_task_panic(|| render::render(self.scene, t, &options))?;
+        let out = catch_task_panic(|| render::render_from(self.scene, t, &options, start))?;
         output::write_both(self.output, &out.mean)?;
         Ok(out)
     }
@@ -289,4 +370,20 @@ fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
              completed) is kept."
         )
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn durations_take_seconds_minutes_and_hours() {
+        assert_eq!(parse_duration("90"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("1.5s"), Ok(Duration::from_millis(1500)));
+        assert_eq!(parse_duration("10m"), Ok(Duration::from_secs(600)));
+        assert_eq!(parse_duration("2h"), Ok(Duration::from_secs(7200)));
+        for bad in ["", "5x", "-3s", "0", "nan", "h"] {
+            assert!(parse_duration(bad).is_err(), "{bad}");
+        }
+    }
 }

@@ -92,6 +92,7 @@ impl<T: Tasks> Strategy for SceneStrategy<T> {
                 spp,
                 seed,
                 progress: false,
+                time_limit: None,
                 on_pass: None,
             },
         );
@@ -191,6 +192,7 @@ where
                     spp,
                     seed: REFERENCE_SEED,
                     progress: true,
+                    time_limit: None,
                     on_pass: None,
                 };
                 let out = render(&reference_scene, &tasks, &options);

@@ -100,6 +100,7 @@ pub fn render_stats<T: Tasks>(scene: &Scene, t: &T, spp: u32, seed: u64) -> (Ima
             spp,
             seed,
             progress: false,
+            time_limit: None,
             on_pass: None,
         },
     );

@@ -3,7 +3,7 @@ use glam::{DVec3, Vec3};
 
 /// Running sums of one pixel's samples, in f64 so that millions of samples add up exactly
 /// enough for the variance.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PixelSums {
     sum: DVec3,
     sum_sq: DVec3,
@@ -22,6 +22,35 @@ impl PixelSums {
         self.sum_sq += v * v;
         self.count += 1;
         true
+    }
+
+    /// Bytes of [`PixelSums::to_le_bytes`].
+    pub const BYTES: usize = 6 * 8 + 4;
+
+    /// The sums as little-endian bytes (sum, sum of squares, count), for a checkpoint.
+    pub fn to_le_bytes(&self) -> [u8; Self::BYTES] {
+        let mut bytes = [0u8; Self::BYTES];
+        let values = self
+            .sum
+            .to_array()
+            .into_iter()
+            .chain(self.sum_sq.to_array());
+        for (chunk, v) in bytes.chunks_exact_mut(8).zip(values) {
+            chunk.copy_from_slice(&v.to_le_bytes());
+        }
+        bytes[48..].copy_from_slice(&self.count.to_le_bytes());
+        bytes
+    }
+
+    /// The sums written by [`PixelSums::to_le_bytes`].
+    pub fn from_le_bytes(bytes: &[u8; Self::BYTES]) -> Self {
+        let f =
+            |i: usize| f64::from_le_bytes(bytes[8 * i..8 * i + 8].try_into().expect("eight bytes"));
+        Self {
+            sum: DVec3::new(f(0), f(1), f(2)),
+            sum_sq: DVec3::new(f(3), f(4), f(5)),
+            count: u32::from_le_bytes(bytes[48..].try_into().expect("four bytes")),
+        }
     }
 
     /// Number of samples added.

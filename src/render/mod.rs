@@ -5,6 +5,7 @@
 //! from one pass to the next and consumed in the same order whatever thread renders it, so
 //! the same seed gives the same image bit for bit on any number of threads.
 
+pub mod checkpoint;
 mod cpu_time;
 mod film;
 mod image;
@@ -23,7 +24,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// Rows per unit of parallel work.
 const BAND_ROWS: usize = 4;
@@ -36,18 +37,53 @@ pub struct RenderOptions<'a> {
     pub seed: u64,
     /// Show a progress bar (with an ETA) on the terminal.
     pub progress: bool,
-    /// Called after every pass with the film so far (to save the current estimate).
-    pub on_pass: Option<&'a (dyn Fn(&Film) + Sync)>,
+    /// Wall time after which no new pass starts (passes are cut to fit what is left): the
+    /// render then ends with fewer samples per pixel than `spp`.
+    pub time_limit: Option<Duration>,
+    /// Called after every pass with the state so far (to save the current estimate, or a
+    /// checkpoint to continue from).
+    pub on_pass: Option<&'a (dyn Fn(&RenderState) + Sync)>,
 }
 
 impl RenderOptions<'_> {
-    /// The scene's own spp and seed, no progress bar, no callback.
+    /// The scene's own spp and seed, no progress bar, no time limit, no callback.
     pub fn from_scene(scene: &Scene) -> Self {
         Self {
             spp: scene.settings().spp,
             seed: scene.settings().seed,
             progress: false,
+            time_limit: None,
             on_pass: None,
+        }
+    }
+}
+
+/// A render's estimate so far: the film, every pixel's random stream where it stopped,
+/// the samples per pixel done and the samples dropped. Continuing it gives the image an
+/// uninterrupted render gives, bit for bit (each pixel's samples are drawn and summed in
+/// the same order however the passes are cut).
+#[derive(Clone, Debug)]
+pub struct RenderState {
+    /// Every pixel's sums.
+    pub film: Film,
+    /// Every pixel's random stream (stream = pixel index).
+    pub samplers: Vec<Sampler>,
+    /// Samples per pixel done.
+    pub spp_done: u32,
+    /// Samples dropped so far because they were NaN, infinite or negative.
+    pub rejected: u64,
+}
+
+impl RenderState {
+    /// A render not started: an empty film and every stream at its start.
+    pub fn new(width: u32, height: u32, seed: u64) -> Self {
+        Self {
+            film: Film::new(width, height),
+            samplers: (0..width as u64 * height as u64)
+                .map(|i| Sampler::new(seed, i))
+                .collect(),
+            spp_done: 0,
+            rejected: 0,
         }
     }
 }
@@ -59,13 +95,14 @@ pub struct RenderStats {
     pub width: u32,
     /// Image height.
     pub height: u32,
-    /// Samples per pixel.
+    /// Samples per pixel of the image (earlier runs of a resumed render included).
     pub spp: u32,
-    /// Camera paths traced (pixels × spp).
+    /// Camera paths traced by this run.
     pub paths: u64,
     /// Rays cast (closest-hit and shadow rays).
     pub rays: u64,
-    /// Samples dropped because they were NaN, infinite or negative.
+    /// Samples dropped because they were NaN, infinite or negative (earlier runs of a
+    /// resumed render included).
     pub rejected_samples: u64,
     /// Wall-clock time, seconds.
     pub wall_seconds: f64,
@@ -95,35 +132,50 @@ pub struct RenderOutput {
     pub stats: RenderStats,
 }
 
-/// The passes a render of `spp` samples is split into: 1, 1, 2, 4, 8, … (the last one
-/// cut to what is left), so a picture appears early and is refined at a doubling pace.
-pub fn pass_sizes(spp: u32) -> Vec<u32> {
-    let mut sizes = Vec::new();
-    let mut done = 0u32;
-    let mut next = 1u32;
-    while done < spp {
-        let n = next.min(spp - done);
-        sizes.push(n);
-        done += n;
-        if sizes.len() > 1 {
-            next = next.saturating_mul(2);
-        }
-    }
-    sizes
-}
-
 /// Renders `scene` with the task implementation `t` on the current rayon pool.
 pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> RenderOutput {
     let camera = scene.camera();
+    let start = RenderState::new(camera.width, camera.height, options.seed);
+    render_from(scene, t, options, start)
+}
+
+/// The size of the next pass: the schedule's `next`, cut to the samples left and, under a
+/// time limit, to what the time left allows at the rate so far (0: stop).
+fn next_pass(next: u32, left: u32, time: Option<(Duration, Duration, u32)>) -> u32 {
+    let n = next.min(left);
+    match time {
+        Some((limit, elapsed, done)) if done > 0 => {
+            let Some(remaining) = limit.checked_sub(elapsed) else {
+                return 0;
+            };
+            let per_spp = elapsed.as_secs_f64() / done as f64;
+            let fits = (remaining.as_secs_f64() / per_spp.max(1e-9)).floor();
+            if fits < 1.0 {
+                0
+            } else {
+                n.min(fits.min(u32::MAX as f64) as u32)
+            }
+        }
+        Some((limit, elapsed, _)) if elapsed >= limit => 0,
+        _ => n,
+    }
+}
+
+/// Continues the render `state` of `scene` up to `options.spp` samples per pixel (or the
+/// time limit) with the task implementation `t`, on the current rayon pool.
+pub fn render_from<T: Tasks>(
+    scene: &Scene,
+    t: &T,
+    options: &RenderOptions<'_>,
+    mut state: RenderState,
+) -> RenderOutput {
+    let camera = scene.camera();
     let (width, height) = (camera.width, camera.height);
-    let mut film = Film::new(width, height);
-    let mut samplers: Vec<Sampler> = (0..width as u64 * height as u64)
-        .map(|i| Sampler::new(options.seed, i))
-        .collect();
+    let pixels = width as u64 * height as u64;
     let band = BAND_ROWS * width as usize;
-    let total = width as u64 * height as u64 * options.spp as u64;
+    let resumed_spp = state.spp_done;
     let bar = if options.progress {
-        let bar = ProgressBar::new(total);
+        let bar = ProgressBar::new(pixels * options.spp.max(resumed_spp) as u64);
         bar.set_style(
             ProgressStyle::with_template(
                 "{elapsed_precise} [{bar:40}] {percent:>3}% {msg} ETA {eta_precise}",
@@ -131,22 +183,37 @@ pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> Re
             .unwrap_or_else(|_| ProgressStyle::default_bar())
             .progress_chars("=> "),
         );
+        bar.set_position(pixels * resumed_spp as u64);
+        bar.reset_eta();
         bar
     } else {
         ProgressBar::hidden()
     };
     let rays = AtomicU64::new(0);
-    let rejected = AtomicU64::new(0);
+    let mut rejected = AtomicU64::new(0);
     let cpu_start = process_cpu_seconds();
     let start = Instant::now();
-    let mut done_spp = 0;
-    for pass in pass_sizes(options.spp) {
+    // Passes of 1, 1, 2, 4, 8, … samples (the last one cut to what is left), so a picture
+    // appears early and is refined at a doubling pace; after 2^k samples the next pass has
+    // 2^k, so a resumed render goes on at the pace it had.
+    let mut next = resumed_spp.max(1);
+    loop {
+        let done_here = state.spp_done - resumed_spp;
+        let time = options
+            .time_limit
+            .map(|limit| (limit, start.elapsed(), done_here));
+        let pass = next_pass(next, options.spp.saturating_sub(state.spp_done), time);
+        if pass == 0 {
+            break;
+        }
         // Samples per pixel finished so far (passes double, so the last pass is half the
         // work: naming the pass's target here read "1024/1024 spp" at 50 %).
-        bar.set_message(format!("{done_spp}/{} spp done", options.spp));
-        film.pixels
+        bar.set_message(format!("{}/{} spp done", state.spp_done, options.spp));
+        state
+            .film
+            .pixels
             .par_chunks_mut(band)
-            .zip(samplers.par_chunks_mut(band))
+            .zip(state.samplers.par_chunks_mut(band))
             .enumerate()
             .for_each(|(b, (sums, band_samplers))| {
                 take_ray_count();
@@ -171,9 +238,13 @@ pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> Re
                 rejected.fetch_add(local_rejected, Ordering::Relaxed);
                 bar.inc(sums.len() as u64 * pass as u64);
             });
-        done_spp += pass;
+        state.spp_done += pass;
+        state.rejected += std::mem::take(rejected.get_mut());
+        if state.spp_done > 1 {
+            next = next.saturating_mul(2);
+        }
         if let Some(callback) = options.on_pass {
-            callback(&film);
+            callback(&state);
         }
     }
     bar.finish_and_clear();
@@ -183,16 +254,16 @@ pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> Re
         (Some(a), Some(b)) => b - a,
         _ => wall_seconds * threads as f64,
     };
-    let paths = width as u64 * height as u64 * options.spp as u64;
+    let paths = pixels * (state.spp_done - resumed_spp) as u64;
     let rays = rays.into_inner();
     let per = |n: u64, s: f64| if s > 0.0 { n as f64 / s } else { 0.0 };
     let stats = RenderStats {
         width,
         height,
-        spp: options.spp,
+        spp: state.spp_done,
         paths,
         rays,
-        rejected_samples: rejected.into_inner(),
+        rejected_samples: state.rejected,
         wall_seconds,
         cpu_seconds,
         threads,
@@ -201,9 +272,26 @@ pub fn render<T: Tasks>(scene: &Scene, t: &T, options: &RenderOptions<'_>) -> Re
         rays_per_cpu_second: per(rays, cpu_seconds),
     };
     RenderOutput {
-        mean: film.mean(),
-        variance: film.variance(),
-        film,
+        mean: state.film.mean(),
+        variance: state.film.variance(),
+        film: state.film,
         stats,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn passes_are_cut_to_the_samples_and_the_time_left() {
+        let s = Duration::from_secs;
+        assert_eq!(next_pass(8, 100, None), 8);
+        assert_eq!(next_pass(8, 3, None), 3);
+        // The first pass always runs; after 4 spp in 4 s, 6 s left fit 6 more.
+        assert_eq!(next_pass(1, 100, Some((s(10), s(0), 0))), 1);
+        assert_eq!(next_pass(8, 100, Some((s(10), s(4), 4))), 6);
+        assert_eq!(next_pass(8, 100, Some((s(10), s(10), 4))), 0);
+        assert_eq!(next_pass(8, 100, Some((s(10), s(9), 4))), 0);
     }
 }
