@@ -598,7 +598,8 @@ tasks! {
     kajiya_kay: KajiyaKay {
         /// The Kajiya-Kay fibre shading value for directions `wo`, `wi` (pointing away from
         /// the fibre) and unit fibre `tangent`, all in one frame: diffuse `kd sin(t, wi)` plus
-        /// specular `ks max(0, sin θi sin θo − cos θi cos θo)^p`. Non-negative and finite.
+        /// specular `ks max(0, c)^p`, `c` the cosine between `wo` and the reflection cone of
+        /// `wi`. Non-negative and finite.
         fn kajiya_kay(wo: Vec3, wi: Vec3, tangent: Vec3, params: &KajiyaKayParams) -> Vec3;
     }
     beckmann_ndf: BeckmannNdf {

@@ -113,6 +113,10 @@ impl Error {
     };
 
     fn of(got: f64, expected: f64) -> Error {
+        if got == expected {
+            // Equal infinities too, whose difference is NaN.
+            return Error::default();
+        }
         let abs = (got - expected).abs();
         if abs.is_nan() {
             return Error::UNBOUNDED;

@@ -38,7 +38,7 @@ pub fn fixed() -> Vec<CaseInput> {
             11,
             LAMBERT_ALBEDO,
         )
-        .note("albedo = mean of f cos θo / pdf over wo"),
+        .note("max_albedo must match the Lambertian's albedo, within Monte Carlo noise"),
         check(
             "errata §2.6.3: the worksheet's k = (n+1)/(2π) gains energy",
             TestBrdf::CosinePower { k: 3.0 / TAU, n: 2 },

@@ -7,7 +7,8 @@ use crate::grade::call::Call;
 use crate::sampling::Sampler;
 use glam::Vec3;
 
-const KK: &str = "kd sin θi + ks max(0, sin θi sin θo − cos θi cos θo)^p, angles to the tangent";
+const KK: &str = "kd sin θi plus ks max(0, c)^p, c the cosine to the reflection cone \
+                  t·wo = −t·wi (angles to the tangent)";
 const SHEET: &str = "the worksheet's form divides by sin θi sin θo and goes negative or infinite";
 
 fn kk(name: &str, wo: Vec3, wi: Vec3) -> CaseInput {

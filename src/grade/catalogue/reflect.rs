@@ -6,7 +6,8 @@ use crate::grade::call::Call;
 use crate::sampling::Sampler;
 use glam::Vec3;
 
-const AWAY: &str = "both wo and the result point away from the surface: 2 (wo·n̂) n̂ − wo";
+const AWAY: &str = "both wo and the result point away from the surface: keep the part of wo \
+                    along n, reverse its part in the surface plane";
 
 pub fn fixed() -> Vec<CaseInput> {
     vec![
@@ -53,7 +54,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
             let wo = frame.to_world(upper(s, 0.0));
             let scale = range(s, 0.5, 2.0);
             CaseInput::new("", Call::Reflect { wo, n: n * scale })
-                .note("normalise n, then 2 (wo·n̂) n̂ − wo")
+                .note("n need not have unit length; keep the length of wo and its angle to n")
         })
         .collect()
 }

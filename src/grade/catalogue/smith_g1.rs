@@ -6,7 +6,7 @@ use crate::grade::call::Call;
 use crate::sampling::Sampler;
 use glam::Vec3;
 
-const G1: &str = "G1 = 2 / (1 + sqrt(1 + α² tan²θ))";
+const G1: &str = "G1 = 1 / (1 + Λ) with the GGX Λ: a value in [0, 1]";
 const BACK: &str = "back-facing: a direction below the surface is fully masked, G1 = 0";
 
 fn at_degrees(deg: f32) -> Vec3 {

@@ -55,8 +55,8 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
                 ("min_pdf", Bound::Within(1e-30, f64::INFINITY)),
                 ("pdf_err", Bound::Within(0.0, 1e-6)),
             ]),
-            guard: "u = 1 − 2⁻²⁴ must still give cos θ > 0 (2.4e-4 with cos θ = sqrt(1 − u)), \
-                    so that f·cos/pdf stays finite; clamp 1 − r² at 0 before the square root",
+            guard: "u = 1 − 2⁻²⁴ must still give a direction above the horizon (cos θ > 0), so \
+                    that f·cos/pdf stays finite; clamp square-root arguments at 0",
         },
         Case {
             task: TaskId::CosineSample,

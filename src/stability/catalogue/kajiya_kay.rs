@@ -23,7 +23,7 @@ fn from_tangent(theta: f64) -> Vec3 {
     Vec3::new(theta.sin() as f32, 0.0, theta.cos() as f32)
 }
 
-/// Cone cosine 1/√7 for wi = wo at this angle from the tangent: −cos 2θ = 1/√7.
+/// The angle from the tangent at which wi = wo has cone cosine 1/√7.
 fn underflow_angle() -> f64 {
     (std::f64::consts::PI - (1.0 / 7f64.sqrt()).acos()) / 2.0
 }
@@ -44,7 +44,8 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             },
             range: NON_NEGATIVE,
             expect: Expect::vector([0.0; 3], Tolerance::abs(1e-6)),
-            guard: "kd sin θi = 0 and the cone cosine is −cos θo < 0: no division by sin θi",
+            guard: "kd sin θi = 0 and wo is far off the reflection cone, so the highlight is 0: no \
+                    division by sin θi",
         },
         Case {
             task: TaskId::KajiyaKay,
@@ -75,7 +76,7 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
         Case {
             task: TaskId::KajiyaKay,
             name: "kajiya_kay/fractional_exponent_negative_cone",
-            input: "wi = wo at 30° from t (cone cosine −0.5), p = 80.5",
+            input: "wi = wo at 30° from t (a negative cone cosine), p = 80.5",
             eval: |t| {
                 let w = from_tangent(30f64.to_radians());
                 t.kajiya_kay(w, w, Vec3::Z, &params(80.5)).into()

@@ -56,7 +56,7 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             eval: |t| t.smith_g1(direction_xz(60f32.to_radians()), 1.0).into(),
             range: UNIT_INTERVAL,
             expect: Expect::scalar(2.0 / 3.0, Tolerance::rel(1e-6)),
-            guard: "with α = 1, G1 = 2c / (c + 1)",
+            guard: "α = 1, cos θ = 0.5 is the worksheet's check value: G1 = 2/3",
         },
         Case {
             task: TaskId::SmithG1,
@@ -77,8 +77,8 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             },
             range: UNIT_INTERVAL,
             expect: Expect::scalar(1.0, Tolerance::abs(1e-7)),
-            guard: "(−1 + sqrt(1 + a))/2 cancels to 0 for a = 1e-8; a/(2(1 + sqrt(1 + a))) \
-                    = 2.5e-9 is exact (in f32 G1 then rounds to 1 either way)",
+            guard: "sqrt(1 + a) − 1 cancels to 0 in f32 for a = 1e-8: rewrite Λ so nothing is \
+                    subtracted, or use the cosine form (G1 then rounds to 1 either way)",
         },
         Case {
             task: TaskId::SmithG1,
