@@ -138,16 +138,21 @@ fn the_handout_refuses_a_non_empty_directory() {
     assert!(err.to_string().contains("not empty"), "{err}");
 }
 
-fn cargo(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+/// `cargo` with `args` in the handout at `dir`.
+fn cargo_command(dir: &Path, args: &[&str]) -> Command {
+    let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    cargo
         .args(args)
         .current_dir(dir)
         .env("PBRLAB_STATE_DIR", dir.join(".state"))
         // The handout builds in its own target folder, as on a student's machine (a shared
         // one would mix its build-script outputs with the repository's).
-        .env_remove("CARGO_TARGET_DIR")
-        .output()
-        .expect("cargo runs")
+        .env_remove("CARGO_TARGET_DIR");
+    cargo
+}
+
+fn cargo(dir: &Path, args: &[&str]) -> std::process::Output {
+    cargo_command(dir, args).output().expect("cargo runs")
 }
 
 #[test]
@@ -272,11 +277,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
 
 /// `cargo` in `dir` as a student runs it (CI's variable insists on untouched stubs).
 fn cargo_outside_ci(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
-        .args(args)
-        .current_dir(dir)
-        .env("PBRLAB_STATE_DIR", dir.join(".state"))
-        .env_remove("CARGO_TARGET_DIR")
+    cargo_command(dir, args)
         .env_remove("CI")
         .output()
         .expect("cargo runs")

@@ -29,11 +29,21 @@ pub struct EstimatorRun {
 }
 
 impl EstimatorRun {
-    /// Efficiency `1 / (variance per sample × time per sample)`; larger is better.
-    pub fn efficiency(&self, samples: usize) -> f64 {
+    /// Efficiency `1 / (variance per sample × time per sample)`; larger is better. `None`
+    /// where it means nothing: an estimator without variance (every estimate the same) or
+    /// a run too fast to time.
+    pub fn efficiency(&self, samples: usize) -> Option<f64> {
         let var = self.std_error * self.std_error * samples as f64;
         let time = self.seconds / samples as f64;
-        1.0 / (var * time).max(f64::MIN_POSITIVE)
+        let cost = var * time;
+        (cost.is_finite() && cost > 0.0).then(|| 1.0 / cost)
+    }
+
+    /// The 95 % confidence interval of the mean (normal approximation: the checks draw
+    /// tens of thousands of estimates).
+    pub fn interval(&self) -> (f64, f64) {
+        let half = 1.959_964 * self.std_error;
+        (self.mean - half, self.mean + half)
     }
 }
 
@@ -265,6 +275,25 @@ mod tests {
             failure.message
         );
         assert!(failure.stats.unwrap().p_value < 1e-3);
+    }
+
+    #[test]
+    fn efficiency_means_nothing_without_variance_and_the_interval_covers_the_mean() {
+        let exact = EstimatorRun {
+            mean: 2.0,
+            std_error: 0.0,
+            error: 0.0,
+            seconds: 0.5,
+        };
+        assert_eq!(exact.efficiency(100), None);
+        let noisy = EstimatorRun {
+            std_error: 0.1,
+            ..exact
+        };
+        // variance per sample 1, time per sample 5 ms.
+        assert!((noisy.efficiency(100).unwrap() - 200.0).abs() < 1e-9);
+        let (lo, hi) = noisy.interval();
+        assert!(lo < 2.0 && hi > 2.0 && ((hi - lo) / 2.0 - 0.196).abs() < 1e-3);
     }
 
     #[test]

@@ -144,6 +144,40 @@ impl ImageDetail {
             && self.non_finite == 0
     }
 
+    /// What fails, in words (empty when the check passes): the property each failing
+    /// criterion states, for the failure list (the numbers are in [`ImageDetail::describe`]).
+    pub fn violations(&self) -> Vec<String> {
+        let mut v = Vec::new();
+        if self.non_finite > 0 {
+            v.push(format!(
+                "{} pixel-channels are NaN or infinite: every pixel must be finite",
+                self.non_finite
+            ));
+        }
+        if self.pass_fraction < PASS_FRACTION {
+            v.push(format!(
+                "only {:.2} % of pixel-channels agree with the reference within noise (need \
+                 {:.1} %): the picture differs somewhere (see the z-map)",
+                100.0 * self.pass_fraction,
+                100.0 * PASS_FRACTION
+            ));
+        }
+        if self.total_z.abs() > Z_AGGREGATE {
+            v.push(format!(
+                "the whole image is {} than the reference by z = {:.1} (need |z| ≤ {}): a \
+                 bias shared by many pixels",
+                if self.total_z > 0.0 {
+                    "brighter"
+                } else {
+                    "darker"
+                },
+                self.total_z,
+                Z_AGGREGATE
+            ));
+        }
+        v
+    }
+
     /// One line for reports.
     pub fn describe(&self) -> String {
         format!(
@@ -188,8 +222,8 @@ pub fn run(
                 }
             }
             result.summary += &detail.describe();
-            if !detail.passed() {
-                result.fail(detail.describe());
+            for violation in detail.violations() {
+                result.fail(violation);
             }
             result.detail = Some(Detail::Image(detail));
         }
@@ -283,6 +317,19 @@ mod tests {
             "{:?}",
             bright.failures
         );
+        // Each failing criterion once, as a property; the numbers only in the summary.
+        assert_eq!(bright.failures.len(), 2, "{:?}", bright.failures);
+        assert!(
+            bright.failures[1].contains("brighter"),
+            "{:?}",
+            bright.failures
+        );
+        assert!(
+            !bright
+                .failures
+                .iter()
+                .any(|f| bright.summary.contains(f.as_str()))
+        );
     }
 
     #[test]
@@ -293,6 +340,7 @@ mod tests {
         let (detail, _) = compare("nan", &student, &reference).unwrap();
         assert_eq!(detail.non_finite, 1);
         assert!(detail.describe().contains("NaN"));
+        assert!(detail.violations()[0].contains("NaN or infinite"));
         assert!(compare("size", &render(4, 8, 0.5, 0.01, 2), &reference).is_err());
     }
 }

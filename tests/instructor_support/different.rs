@@ -290,12 +290,65 @@ pub fn catalogue() -> Vec<Variant> {
                     let tan2 = alpha2 * u.y / (1.0 - u.y);
                     let c = 1.0 / (1.0 + tan2).sqrt();
                     let s = (1.0 - c * c).max(0.0).sqrt();
-                    let h = Vec3::new(s * cp, s * sp, c);
-                    if wo.dot(h) <= 0.0 {
-                        return None;
+                    mirror_above(t, wo, Vec3::new(s * cp, s * sp, c))
+                })
+            },
+        ),
+        different(
+            "GGX sampling by stretching a concentric cosine sample",
+            NdfSample,
+            |p| {
+                p.ndf_sample = Some(|t, wo, ax, ay, u| {
+                    // (x, y, z) cosine-distributed is D·cos of GGX at α = 1; stretching the
+                    // slopes by (αx, αy) gives D·cos at (αx, αy). The corners of the square
+                    // land on the rim of the disk, where h is horizontal and wi is rejected.
+                    let c = cosine_direction(u);
+                    mirror_above(t, wo, Vec3::new(ax * c.x, ay * c.y, c.z).normalize())
+                })
+            },
+        ),
+        different(
+            "a path traced in a loop, roulette on the path throughput (q capped at 1)",
+            PathTrace,
+            |p| {
+                p.path_trace = Some(|t, scene, segment, depth, sampler| {
+                    let (mut segment, mut depth) = (*segment, depth);
+                    let (mut radiance, mut beta) = (Vec3::ZERO, Vec3::ONE);
+                    while depth > 0 {
+                        let counted = segment.emission_counted;
+                        let Some(hit) = segment.hit else {
+                            if !counted {
+                                radiance += beta * scene.environment(segment.ray.dir);
+                            }
+                            break;
+                        };
+                        let wo = -segment.ray.dir;
+                        if !counted {
+                            radiance += beta * scene.emitted(&hit, wo);
+                        }
+                        if depth == 1 {
+                            break;
+                        }
+                        let direct = t.mis(scene, &hit, wo, scene.heuristic(), sampler);
+                        radiance += beta * direct.radiance;
+                        let Some(bounce) = direct.bounce else {
+                            break;
+                        };
+                        if depth == 2 {
+                            break;
+                        }
+                        beta *= bounce.weight;
+                        if scene.settings().roulette_applies(depth) {
+                            let q = beta.max_element().min(1.0);
+                            if q.is_nan() || q <= 0.0 || sampler.next_1d() >= q {
+                                break;
+                            }
+                            beta /= q;
+                        }
+                        segment = bounce.segment;
+                        depth -= 1;
                     }
-                    let wi = t.reflect(wo, h);
-                    (wi.z > 0.0).then_some(wi)
+                    radiance
                 })
             },
         ),
@@ -305,6 +358,16 @@ pub fn catalogue() -> Vec<Variant> {
             |p| p.brdf_check = Some(cosine_weighted_check),
         ),
     ]
+}
+
+/// `wo` mirrored about the microfacet normal `h`, when `h` faces `wo` and the mirror
+/// direction is above the surface.
+fn mirror_above(t: &Patch, wo: Vec3, h: Vec3) -> Option<Vec3> {
+    if !h.is_finite() || wo.dot(h) <= 0.0 {
+        return None;
+    }
+    let wi = t.reflect(wo, h);
+    (wi.z > 0.0).then_some(wi)
 }
 
 fn cosine_direction(u: Vec2) -> Vec3 {

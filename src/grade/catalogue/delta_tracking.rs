@@ -107,6 +107,13 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         slabs: vec![(f32::INFINITY, coefficients(0.0, 1.0))],
         majorant: 1.0,
     };
+    // M5: σa = 0.2, σs = 0.3 under a majorant of 500: about 500 null collisions a flight,
+    // where a walk that loses precision, caps its own steps or skips the null-collision
+    // test shows.
+    let m5 = Slabs {
+        slabs: vec![(f32::INFINITY, coefficients(0.2, 0.3))],
+        majorant: 500.0,
+    };
     let e1 = (-1.0f64).exp();
     // M3's optical depth is 0.5 · 1 + 0.5 · 2 = 1.5; its outcome probabilities follow from
     // integrating σ(t) e^{−τ(t)} over each slab.
@@ -150,5 +157,14 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         spec("P(scatter), two slabs", m3_scatter, &m3, Event::Scatter),
         spec("P(absorb), two slabs", m3_absorb, &m3, Event::Absorb),
         spec("P(absorb) = 0 in a pure scatterer", 0.0, &m4, Event::Absorb),
+        EstimatorSpec {
+            samples: 20_000,
+            ..spec(
+                "P(absorb), σa = 0.2, σs = 0.3 under a majorant of 500",
+                0.4 * (1.0 - (-0.5f64).exp()),
+                &m5,
+                Event::Absorb,
+            )
+        },
     ]
 }

@@ -63,18 +63,26 @@ fn check_html(c: &CheckResult) -> String {
         }
         Some(Detail::Estimator(e)) => {
             let row = |who: &str, r: &crate::grade::estimator::EstimatorRun| {
+                let (lo, hi) = r.interval();
+                let covers = if (lo..=hi).contains(&e.analytic) {
+                    ""
+                } else {
+                    " class=\"failed\""
+                };
                 format!(
-                    "<tr><td>{who}</td><td>{}</td><td>{}</td><td>{}</td><td>{} s</td><td>{}</td></tr>",
+                    "<tr><td>{who}</td><td>{}</td><td>{}</td><td{covers}>[{}, {}]</td><td>{}</td><td>{} s</td><td>{}</td></tr>",
                     fmt_num(r.mean),
                     fmt_num(r.std_error),
+                    fmt_num(lo),
+                    fmt_num(hi),
                     fmt_num(r.error),
                     fmt_num(r.seconds),
-                    fmt_num(r.efficiency(e.samples))
+                    r.efficiency(e.samples).map_or("—".into(), fmt_num)
                 )
             };
             let _ = write!(
                 s,
-                "<table><tr><th>{} samples</th><th>mean</th><th>std. error</th><th>rel. error</th><th>time</th><th>efficiency 1/(σ²t)</th></tr>{}{}</table><p>Analytic value {}.</p>",
+                "<table><tr><th>{} samples</th><th>mean</th><th>std. error</th><th>95 % interval</th><th>rel. error</th><th>time</th><th>efficiency 1/(σ²t)</th></tr>{}{}</table><p>Analytic value {}.</p>",
                 e.samples,
                 row("yours", &e.student),
                 e.reference
@@ -85,11 +93,8 @@ fn check_html(c: &CheckResult) -> String {
             );
         }
         Some(Detail::Image(img)) => {
-            let _ = write!(
-                s,
-                "<p>{}</p><div class=\"images\">",
-                escape(&img.describe())
-            );
+            // Its numbers are the summary above.
+            s += "<div class=\"images\">";
             for f in &img.files {
                 let _ = write!(s, "<img src=\"{}\" alt=\"{}\">", escape(f), escape(f));
             }
