@@ -6,16 +6,19 @@
 #[allow(dead_code)]
 mod stability_support;
 
-use glam::Vec3;
 use indicatif::ProgressBar;
-use pbrlab::converge::builtin::{builtin, irradiance};
+use pbrlab::converge::builtin::builtin;
 use pbrlab::converge::{Strategy, StudyConfig, StudyResult, run_study};
-#[cfg(feature = "solutions")]
-use pbrlab::converge::{Summary, summarise};
-use pbrlab::sampling::Sampler;
 use pbrlab::worksheet::TaskFns;
 use pbrlab_exercises::TASKS as Student;
-use std::sync::Arc;
+#[cfg(feature = "solutions")]
+use {
+    glam::Vec3,
+    pbrlab::converge::builtin::irradiance,
+    pbrlab::converge::{Summary, summarise},
+    pbrlab::sampling::Sampler,
+    std::sync::Arc,
+};
 
 /// Cosine-weighted sampling whose pdf is 5 % too large: every estimate is 5 % low.
 #[cfg(feature = "solutions")]
@@ -56,6 +59,7 @@ const CONFIG: StudyConfig = StudyConfig {
     min_spp: 1,
     max_spp: 1024,
     seed: 11,
+    runs: 1,
 };
 
 #[cfg(feature = "solutions")]
@@ -235,6 +239,61 @@ fn scene_variants_follow_what_the_scene_contains() {
     );
 }
 
+/// With repeated runs every level has a 95 % interval, and the bias test flags the
+/// strategy with a known bias (its squared bias is the one computed above) and neither
+/// unbiased one; the equal-time table has every strategy.
+#[cfg(feature = "solutions")]
+#[test]
+fn repeated_runs_give_intervals_and_a_bias_test_that_flags_only_the_biased_strategy() {
+    use pbrlab::converge::study::equal_time;
+    use pbrlab_solutions::TASKS as Reference;
+    let study = builtin("irradiance", Reference).unwrap();
+    let biased = BiasedCosine {
+        skies: Arc::new(irradiance::skies(irradiance::PIXELS)),
+    };
+    let mut strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
+    strategies.push(&biased);
+    let config = StudyConfig {
+        max_spp: 64,
+        runs: 16,
+        ..CONFIG
+    };
+    let result = run_study(
+        &strategies,
+        &study.reference,
+        &config,
+        &ProgressBar::hidden(),
+    )
+    .unwrap();
+    assert_eq!(result.points.len(), 3 * 7);
+    for p in &result.points {
+        assert_eq!(p.runs, 16);
+        let (lo, hi) = p.rel_mse_interval;
+        assert!(lo < p.rel_mse && p.rel_mse < hi, "{p:?}");
+        assert!(p.rel_var > 0.0 && p.rel_var <= p.rel_mse * 1.5, "{p:?}");
+    }
+    let summaries = summarise(&result.points, study.reference_floor);
+    for name in ["uniform", "cosine"] {
+        let test = summary(&summaries, name)
+            .bias
+            .expect("runs give a bias test");
+        assert!(!test.significant(), "{name}: {test:?}");
+        assert!(summary(&summaries, name).time_to_unit_variance.is_some());
+    }
+    let test = summary(&summaries, "cosine_pdf_5pc_high")
+        .bias
+        .expect("runs give a bias test");
+    assert!(test.biased(), "{test:?}");
+    // (0.05/1.05)² scaled by E²/(E² + ε), as the single-run test finds it at 1024 spp.
+    assert!(
+        (test.bias * test.bias / 2.27e-3 - 1.0).abs() < 0.2,
+        "{test:?}"
+    );
+    let (time, table) = equal_time(&result.points).unwrap();
+    assert!(time > 0.0);
+    assert_eq!(table.len(), 3);
+}
+
 #[cfg(feature = "solutions")]
 #[test]
 fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
@@ -265,6 +324,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     assert!(out.path().join("reference.exr").is_file());
     let config = StudyConfig {
         max_spp: 16,
+        runs: 8,
         ..CONFIG
     };
     let run = |study: &pbrlab::converge::Study| {
@@ -282,6 +342,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     assert_eq!(result.points.len(), 5 * 5);
     for s in summarise(&result.points, study.reference_floor) {
         assert!(!s.flattening(), "{}: {:?}", s.strategy, s.slope_spp);
+        assert!(!s.biased(), "{}: {:?}", s.strategy, s.bias);
         assert_eq!(s.non_finite, 0);
     }
 
@@ -303,6 +364,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     );
     for s in summarise(&run(&study).points, study.reference_floor) {
         assert!(s.flattening(), "{}: {:?}", s.strategy, s.slope_spp);
+        assert!(s.biased(), "{}: {:?}", s.strategy, s.bias);
     }
 }
 
@@ -317,6 +379,7 @@ fn each_finished_level_is_handed_over_for_saving() {
         min_spp: 1,
         max_spp: 8,
         seed: 3,
+        runs: 2,
     };
     let mut saved: Vec<usize> = Vec::new();
     let result = run_study_reporting(
@@ -333,4 +396,52 @@ fn each_finished_level_is_handed_over_for_saving() {
         vec![per_level, 2 * per_level, 3 * per_level, 4 * per_level]
     );
     assert_eq!(saved.last(), Some(&result.points.len()));
+}
+
+/// The shipped scenes with several strategies, 16 runs a level: every strategy has its
+/// interval and none is called biased (the reference's strategies are unbiased; the
+/// heavy-tailed ones on veach_mis were the old single-run study's false alarms).
+#[cfg(feature = "solutions")]
+#[test]
+#[ignore = "slow: 16 runs a level of three scene studies"]
+fn no_unbiased_strategy_of_the_shipped_scenes_is_called_biased() {
+    use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
+    use pbrlab::scene::LoadOptions;
+    use pbrlab_solutions::TASKS as Reference;
+    let base = LoadOptions {
+        width: Some(48),
+        height: Some(48),
+        ..LoadOptions::default()
+    };
+    let config = StudyConfig {
+        max_spp: 32,
+        runs: 16,
+        ..CONFIG
+    };
+    for scene in ["veach_mis.yaml", "cornell.yaml", "smoke.yaml"] {
+        let out = tempfile::tempdir().unwrap();
+        let source = ReferenceSource::Render {
+            tasks: Reference,
+            label: "reference",
+            spp: 16 * 32,
+        };
+        let study = scene_study(&scene_file(scene), Reference, &base, source, out.path()).unwrap();
+        let strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
+        let result = run_study(
+            &strategies,
+            &study.reference,
+            &config,
+            &ProgressBar::hidden(),
+        )
+        .unwrap();
+        assert!(result.failures.is_empty(), "{scene}: {:?}", result.failures);
+        for s in summarise(&result.points, study.reference_floor) {
+            let (lo, hi) = s.final_interval;
+            assert!(
+                lo <= s.final_rel_mse && s.final_rel_mse <= hi,
+                "{scene}: {s:?}"
+            );
+            assert!(!s.biased(), "{scene}: {}: {:?}", s.strategy, s.bias);
+        }
+    }
 }

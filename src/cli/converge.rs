@@ -32,9 +32,13 @@ pub struct Args {
     /// Samples per pixel of the first level.
     #[arg(long, default_value_t = 1)]
     pub min_spp: u32,
-    /// Seed of the first level.
+    /// Seed of the first run.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Independent runs per level: their mean relMSE gets a 95 % interval, and their spread
+    /// splits the error into variance and bias (2 or more; 1 measures each level once).
+    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..))]
+    pub runs: u32,
     /// Scene only: image width (overrides the scene's; smaller is faster).
     #[arg(long)]
     pub width: Option<u32>,
@@ -194,6 +198,7 @@ fn study_with<T: Tasks + Clone + Send + 'static>(
         min_spp: args.min_spp,
         max_spp,
         seed: args.seed,
+        runs: args.runs,
     };
     let progress = ProgressBar::new(0).with_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:32}] {pos}/{len} {msg}")?
@@ -209,7 +214,7 @@ fn study_with<T: Tasks + Clone + Send + 'static>(
         &config,
         &progress,
         &mut |so_far| {
-            if let Err(e) = write_csv(&csv, &so_far.points) {
+            if let Err(e) = write_csv(&csv, &so_far.points, study.reference_floor) {
                 save_error.get_or_insert(e);
             }
         },
@@ -234,6 +239,7 @@ fn study_with<T: Tasks + Clone + Send + 'static>(
     }
 
     print_table(&summarise(&result.points, study.reference_floor));
+    print_equal_time(&result.points);
     for f in &result.failures {
         eprintln!(
             "strategy {} failed at {} spp: {}",
@@ -246,8 +252,9 @@ fn study_with<T: Tasks + Clone + Send + 'static>(
     Ok(())
 }
 
-/// One row per strategy: final error, the two slopes, efficiency (absolute and relative
-/// to the most efficient strategy) and what the slope suggests.
+/// One row per strategy: final error with its interval, the slope against spp,
+/// efficiency (absolute and relative to the most efficient strategy), the time to unit
+/// variance, and the verdict on bias.
 fn print_table(summaries: &[Summary]) {
     let best = summaries
         .iter()
@@ -255,39 +262,67 @@ fn print_table(summaries: &[Summary]) {
         .filter(|e| e.is_finite())
         .fold(0.0, f64::max);
     println!(
-        "\n{:<26} {:>12} {:>16} {:>15} {:>12} {:>9}  note",
-        "strategy", "final relMSE", "slope vs time", "slope vs spp", "efficiency", "relative"
+        "\n{:<26} {:>26} {:>13} {:>12} {:>9} {:>13}  bias",
+        "strategy", "final relMSE [95 %]", "slope vs spp", "efficiency", "relative", "t(var = 1)"
     );
     for s in summaries {
-        let slope = |f: Option<crate::converge::fit::Fit>| {
-            f.map_or("—".into(), |f| format!("{:.2} (r²={:.2})", f.slope, f.r2))
-        };
         let fitted = s.slope_spp.map_or(0, |f| f.points);
         let note = if s.non_finite > 0 {
             format!("{} NaN/inf values or dropped samples", s.non_finite)
+        } else if let Some(b) = s.bias {
+            if b.biased() {
+                format!("BIASED: about {} (z = {:.1})", format_number(b.bias), b.z)
+            } else if b.significant() {
+                format!(
+                    "possible, below the noise: about {} (z = {:.1}; raise --max-spp)",
+                    format_number(b.bias),
+                    b.z
+                )
+            } else {
+                format!("none detected (z = {:.1})", b.z)
+            }
         } else if fitted < 3 && s.at_floor > 0 {
             "at the reference's noise: raise --reference-spp".into()
         } else if fitted < 3 {
             "too few levels to judge: raise --max-spp".into()
         } else if s.flattening() {
-            "flattening: biased?".into()
-        } else if s.slope_spp.is_some_and(|f| f.r2 < 0.7) {
-            "noisy (heavy-tailed samples?): raise --max-spp".into()
+            "flattening: biased? (--runs 16 tests it)".into()
         } else {
-            "≈ −1: unbiased".into()
+            "slope ≈ −1 (--runs 16 tests it)".into()
         };
+        let (lo, hi) = s.final_interval;
         println!(
-            "{:<26} {:>12} {:>16} {:>15} {:>12} {:>9}  {note}",
+            "{:<26} {:>26} {:>13} {:>12} {:>9} {:>13}  {note}",
             s.strategy,
-            format_number(s.final_rel_mse),
-            slope(s.slope_time),
-            slope(s.slope_spp).split(' ').next().unwrap_or("—"),
+            format!(
+                "{} [{}, {}]",
+                format_number(s.final_rel_mse),
+                format_number(lo),
+                format_number(hi)
+            ),
+            s.slope_spp
+                .map_or("—".into(), |f| format!("{:.2}", f.slope)),
             format_number(s.efficiency),
             if best > 0.0 {
                 format!("{:.3}", s.efficiency / best)
             } else {
                 "—".into()
             },
+            s.time_to_unit_variance
+                .map_or("—".into(), |t| format!("{} s", format_number(t))),
         );
+    }
+}
+
+/// The relMSE of every strategy at the same wall time (the longest time every strategy
+/// reached), read off its measured points on log-log axes: which strategy is better for a
+/// given budget, which differs from which is better per sample.
+fn print_equal_time(points: &[crate::converge::Point]) {
+    let Some((time, table)) = crate::converge::study::equal_time(points) else {
+        return;
+    };
+    println!("\nat equal time ({} s per estimate):", format_number(time));
+    for (strategy, rel_mse) in &table {
+        println!("  {strategy:<26} relMSE {}", format_number(*rel_mse));
     }
 }

@@ -1,11 +1,16 @@
 //! Error against run time: how fast each sampling strategy converges.
 //!
 //! A study renders (or estimates) the same quantities with several [`Strategy`]s at
-//! doubling sample counts, times each estimate ([`clock`]), measures it against a
-//! reference ([`metrics`]: relMSE, RMSE), and fits the slope of log relMSE against log
-//! time and against log spp ([`fit`], [`study::summarise`]). An unbiased estimator has a
-//! slope near −1; a slope that flattens at high sample counts reveals bias. Efficiency is
-//! `1 / (relMSE · time)`. The points go to a CSV ([`csv`]) and a log-log plot ([`plot`]).
+//! doubling sample counts, several independent runs at each, times each estimate
+//! ([`clock`]), measures it against a reference ([`metrics`]: relMSE, RMSE), and reports
+//! per level the expected relMSE with a 95 % interval and its split into variance (the
+//! spread over the runs) and squared bias ([`study::Point`]). It fits the slope of log
+//! relMSE against log time and log spp ([`fit`], [`study::summarise`]): about −1 for an
+//! unbiased estimator. Bias is judged by a test on the squared bias at the largest sample
+//! count ([`study::BiasTest`]), not by the slope, which heavy-tailed unbiased estimators
+//! flatten too. Efficiency is `1 / (relMSE · time)`; the time to unit variance and an
+//! equal-time comparison ([`study::equal_time`]) say which strategy wins for a budget.
+//! The points go to a CSV ([`csv`]) and a log-log plot with error bars ([`plot`]).
 //!
 //! `pbrlab converge` runs a study from the command line; the grader can call
 //! [`run_study`] on an estimator task to get the same figures. [`scene_study`] studies a

@@ -101,7 +101,17 @@ fn draw<DB: DrawingBackend>(
         }
     };
     let (t0, t1) = range(|p| p.wall_s);
+    // The error bars fit too (a lower end at or below 0 is cut at the axis).
     let (e0, e1) = range(|p| p.rel_mse);
+    let e0 = usable
+        .iter()
+        .map(|p| p.rel_mse_interval.0)
+        .filter(|lo| *lo > 0.0)
+        .fold(e0, |a, lo| a.min(lo / 1.2));
+    let e1 = usable
+        .iter()
+        .map(|p| p.rel_mse_interval.1)
+        .fold(e1, |a, hi| a.max(hi * 1.2));
 
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(&root)
@@ -115,6 +125,9 @@ fn draw<DB: DrawingBackend>(
         .x_desc("wall time [s]")
         .y_desc("relMSE")
         .label_style((FAMILY, 14))
+        // A few labels: a log axis over decades labelled at every tick overlaps.
+        .x_labels(6)
+        .y_labels(8)
         .x_label_formatter(&|x| format!("{x:.0e}"))
         .y_label_formatter(&|y| format!("{y:.0e}"))
         .draw()?;
@@ -140,6 +153,15 @@ fn draw<DB: DrawingBackend>(
         chart.draw_series(
             line.into_iter()
                 .map(|xy| Circle::new(xy, 3, color.filled())),
+        )?;
+        // The 95 % interval of each mean relMSE, over the runs.
+        chart.draw_series(
+            mine.iter()
+                .filter(|p| p.rel_mse_interval.1 > p.rel_mse_interval.0)
+                .map(|p| {
+                    let (lo, hi) = p.rel_mse_interval;
+                    PathElement::new(vec![(p.wall_s, lo.max(e0)), (p.wall_s, hi)], color)
+                }),
         )?;
     }
     chart
@@ -170,12 +192,18 @@ mod tests {
             .flat_map(|(k, name)| {
                 (0..6).map(move |level| {
                     let spp = 1u32 << level;
+                    let rel_mse = (k + 1) as f64 / spp as f64;
                     Point {
                         strategy: (*name).into(),
                         spp,
+                        runs: 16,
                         wall_s: 1e-3 * spp as f64,
                         cpu_s: None,
-                        rel_mse: (k + 1) as f64 / spp as f64,
+                        rel_mse,
+                        rel_mse_interval: (0.8 * rel_mse, 1.2 * rel_mse),
+                        rel_var: rel_mse,
+                        rel_bias2: 0.0,
+                        rel_bias2_se: 0.0,
                         rmse: 0.0,
                         efficiency: 0.0,
                         non_finite: 0,
@@ -186,7 +214,8 @@ mod tests {
         plot_error_vs_time(&points, "test", &png, &svg).unwrap();
         let svg_text = std::fs::read_to_string(&svg).unwrap();
         assert!(svg_text.contains("cosine") && svg_text.contains("uniform"));
-        // Each strategy's colour draws its line and its legend swatch, nothing else.
+        // Each strategy's colour draws its line and its legend swatch at width 2, and an
+        // error bar per point at width 1.
         for color in &PALETTE[..2] {
             let stroke = format!(
                 "stroke=\"#{:02X}{:02X}{:02X}\" stroke-width=\"2\"",
