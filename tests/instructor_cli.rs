@@ -186,18 +186,26 @@ fn the_reference_scores_full_marks_in_every_format() {
         page.contains("<svg") && page.contains("cosine_sample"),
         "no histograms"
     );
-    // The grader draws the renders' pictures from the workers' raw images.
+    // The grader draws the renders' pictures from the workers' raw images, and the page
+    // embeds them: one self-contained file.
     for scene in ["cornell", "smoke"] {
-        for picture in ["student", "reference", "difference"] {
+        for picture in ["student", "reference", "difference", "failed"] {
             let file = std::fs::read_dir(&html)
                 .unwrap()
                 .flatten()
                 .map(|e| e.file_name().to_string_lossy().into_owned())
                 .find(|f| f.contains(scene) && f.ends_with(&format!("-{picture}.png")));
             let file = file.unwrap_or_else(|| panic!("no {picture} picture of {scene}"));
-            assert!(page.contains(&file), "{file} not on the page");
+            assert!(!page.contains(&file), "{file} is linked, not embedded");
         }
     }
+    let renders = pbrlab::grade::renders::RENDER_CHECKS.len();
+    assert_eq!(page.matches("class=\"render-check\"").count(), renders);
+    assert_eq!(
+        page.matches("src=\"data:image/png;base64,").count(),
+        4 * renders
+    );
+    assert!(page.contains("z-map") && page.contains("yours brighter"));
     // A reference grade is not a student's progress.
     assert!(!state.path().join("last-grade.json").exists());
 }

@@ -201,7 +201,7 @@ impl ImageDetail {
 }
 
 /// The image check of one render: compares `student` with `reference` and, given a report
-/// directory, writes student | reference | difference PNGs there for the HTML page.
+/// directory, writes its pictures and values there for the HTML page ([`super::report::images`]).
 pub fn run(
     name: &str,
     student: &ImageStats,
@@ -216,7 +216,7 @@ pub fn run(
         Err(message) => result.fail(message),
         Ok((mut detail, z)) => {
             if let Some(dir) = report_dir {
-                match super::report::images::write_triple(dir, name, student, reference, &z) {
+                match super::report::images::write_pictures(dir, name, student, reference, &z) {
                     Ok(files) => detail.files = files,
                     Err(e) => result.summary = format!("(images not written: {e:#}) "),
                 }
@@ -309,7 +309,7 @@ mod tests {
         let Some(Detail::Image(detail)) = &ok.detail else {
             panic!("no detail")
         };
-        assert_eq!(detail.files.len(), 3);
+        assert_eq!(detail.files.len(), 5);
         let bright = run("bright", &render(16, 8, 0.6, 0.01, 3), &reference, None);
         assert!(!bright.passed);
         assert!(

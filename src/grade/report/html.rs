@@ -1,6 +1,8 @@
-//! The HTML report: one page with, per task, the verdict and failing cases, histograms of
-//! sampling checks, estimator runs against the reference, and student | reference |
-//! difference images of render checks.
+//! The HTML report: one self-contained page (pictures embedded) with, per task, the
+//! verdict and failing cases, observed against expected histograms of sampling checks,
+//! estimator runs with their 95 % intervals against the analytic value, and for each
+//! render check the student's render against the reference (a slider wipes between them),
+//! the z-map with its legend, the failed pixels, and every pixel's values under the cursor.
 
 use super::svg;
 use crate::grade::output::fmt_num;
@@ -20,9 +22,91 @@ const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:70em;margin
 table{border-collapse:collapse}td,th{padding:.2em .6em;border-bottom:1px solid #ddd;text-align:left}\
 .passed{color:#176b2c}.failed{color:#a11}.muted{color:#777}pre{background:#f6f6f6;padding:.5em;overflow-x:auto;white-space:pre-wrap}\
 .maps{display:flex;gap:1em;flex-wrap:wrap}figure{margin:0}figcaption{font-size:.8em;color:#555}\
-.images img{image-rendering:pixelated;max-width:32%}";
+.render{display:flex;gap:1.5em;flex-wrap:wrap;align-items:flex-start}.pixels{width:288px;height:288px;image-rendering:pixelated;display:block;cursor:crosshair}.wipe{position:relative;width:288px;height:288px}.wipe img{position:absolute;top:0;left:0}.legend{display:flex;align-items:center;gap:.4em;font-size:.8em;color:#555}.ramp{display:inline-block;width:120px;height:10px;background:linear-gradient(to right,#00f,#fff,#f00)}.swatch{display:inline-block;width:10px;height:10px}.probe{font-family:monospace;font-size:.85em;min-height:1.2em}";
 
-fn check_html(c: &CheckResult) -> String {
+/// Wires each render block: the slider wipes between the student's render (left) and
+/// the reference (right); the cursor over any picture shows that pixel's values.
+const SCRIPT: &str = r#"document.querySelectorAll('.render-check').forEach(function(r){
+var v=JSON.parse(r.querySelector('script.values').textContent);
+var mine=r.querySelector('img.mine'),slider=r.querySelector('input.wipe-at'),probe=r.querySelector('.probe');
+function wipe(){mine.style.clipPath='inset(0 '+(100-slider.value)+'% 0 0)';}
+slider.addEventListener('input',wipe);wipe();
+function show(e){var b=e.currentTarget.getBoundingClientRect();
+var x=Math.floor((e.clientX-b.left)/b.width*v.width),y=Math.floor((e.clientY-b.top)/b.height*v.height);
+if(x<0||y<0||x>=v.width||y>=v.height)return;var i=3*(y*v.width+x);
+function f(a){return a.slice(i,i+3).map(function(t){return t===null?'NaN':Number(t).toPrecision(4);}).join(', ');}
+probe.textContent='pixel ('+x+', '+y+'): yours ['+f(v.student)+'], reference ['+f(v.reference)+'], z ['+f(v.z)+']';}
+r.querySelectorAll('.pixels').forEach(function(p){p.addEventListener('mousemove',show);});});
+window.addEventListener('load',function(){var n=0;document.querySelectorAll('img').forEach(function(i){if(i.complete&&i.naturalWidth>0)n++;});
+document.body.dataset.imagesLoaded=String(n);});
+document.body.dataset.ready='1';"#;
+
+/// The pictures of a render check, read from the report folder: embedded as data URIs, or
+/// linked by name where a file cannot be read.
+struct Pictures<'a> {
+    dir: Option<&'a Path>,
+}
+
+impl Pictures<'_> {
+    /// The `src` of picture `file`.
+    fn src(&self, file: &str) -> String {
+        match self.dir.and_then(|d| std::fs::read(d.join(file)).ok()) {
+            Some(bytes) => format!(
+                "data:image/png;base64,{}",
+                base64::Engine::encode(&base64::engine::general_purpose::STANDARD, bytes)
+            ),
+            None => escape(file),
+        }
+    }
+
+    /// The text of file `file` (the values), or an empty JSON object.
+    fn text(&self, file: &str) -> String {
+        self.dir
+            .and_then(|d| std::fs::read_to_string(d.join(file)).ok())
+            .unwrap_or_else(|| "{}".into())
+    }
+}
+
+/// The render block of an image check with pictures `files` (as
+/// [`super::images::write_pictures`] names them).
+fn render_html(files: &[String], pictures: &Pictures<'_>) -> String {
+    let find = |suffix: &str| files.iter().find(|f| f.ends_with(suffix));
+    let (Some(student), Some(reference), Some(zmap), Some(failed), Some(values)) = (
+        find("-student.png"),
+        find("-reference.png"),
+        find("-difference.png"),
+        find("-failed.png"),
+        find("-values.json"),
+    ) else {
+        return String::new();
+    };
+    format!(
+        "<div class=\"render-check\"><div class=\"render\">\
+         <figure><div class=\"wipe\"><img class=\"pixels\" src=\"{ref_src}\" alt=\"reference render\">\
+         <img class=\"pixels mine\" src=\"{mine_src}\" alt=\"your render\"></div>\
+         <figcaption>yours ◀ <input class=\"wipe-at\" type=\"range\" min=\"0\" max=\"100\" value=\"50\" \
+         aria-label=\"wipe between your render and the reference\"> ▶ reference</figcaption></figure>\
+         <figure><img class=\"pixels\" src=\"{zmap_src}\" alt=\"z-map\"><figcaption>z-map: \
+         (yours − reference) / noise, per pixel the channel furthest off\
+         <span class=\"legend\">yours darker <span class=\"ramp\"></span> yours brighter \
+         (white: within noise; full colour at |z| ≥ {sat:.1}) \
+         <span class=\"swatch\" style=\"background:#0c0\"></span> NaN or ∞</span></figcaption></figure>\
+         <figure><img class=\"pixels\" src=\"{failed_src}\" alt=\"failed pixels\"><figcaption>\
+         <span class=\"swatch\" style=\"background:#ffd200\"></span> failed pixels (|z| &gt; {crit:.2} \
+         in a channel)</figcaption></figure></div>\
+         <p class=\"probe\">Point at a picture for a pixel's values.</p>\
+         <script type=\"application/json\" class=\"values\">{values_json}</script></div>",
+        ref_src = pictures.src(reference),
+        mine_src = pictures.src(student),
+        zmap_src = pictures.src(zmap),
+        failed_src = pictures.src(failed),
+        sat = 2.0 * crate::grade::image_check::Z_CRITICAL,
+        crit = crate::grade::image_check::Z_CRITICAL,
+        values_json = pictures.text(values).replace("</", "<\\/"),
+    )
+}
+
+fn check_html(c: &CheckResult, pictures: &Pictures<'_>) -> String {
     let mut s = String::new();
     let class = if c.passed { "passed" } else { "failed" };
     let _ = write!(
@@ -92,21 +176,17 @@ fn check_html(c: &CheckResult) -> String {
                 fmt_num(e.analytic)
             );
         }
-        Some(Detail::Image(img)) => {
-            // Its numbers are the summary above.
-            s += "<div class=\"images\">";
-            for f in &img.files {
-                let _ = write!(s, "<img src=\"{}\" alt=\"{}\">", escape(f), escape(f));
-            }
-            s += "</div>";
-        }
+        // Its numbers are the summary above.
+        Some(Detail::Image(img)) => s += &render_html(&img.files, pictures),
         None => {}
     }
     s
 }
 
-/// The page for `report`.
-pub fn page(report: &GradeReport) -> String {
+/// The page for `report`, with the pictures of render checks read from `dir` (the report
+/// folder they were written to) and embedded.
+pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
+    let pictures = Pictures { dir };
     let mut s = format!(
         "<!doctype html><html lang=\"en\"><meta charset=\"utf-8\"><title>pbrlab grade</title><style>{STYLE}</style>\
          <h1>pbrlab grade: {:.1} / {}</h1><p class=\"muted\">{} implementation, seed {}, {:.1} s</p><table>\
@@ -152,7 +232,7 @@ pub fn page(report: &GradeReport) -> String {
             );
         }
         for c in &t.checks {
-            s += &check_html(c);
+            s += &check_html(c, &pictures);
         }
         if !t.output.trim().is_empty() {
             let _ = write!(
@@ -163,15 +243,16 @@ pub fn page(report: &GradeReport) -> String {
         }
         s += "</section>";
     }
-    s += "</html>\n";
+    let _ = writeln!(s, "<script>{SCRIPT}</script></html>");
     s
 }
 
-/// Writes `dir/index.html` (creating `dir`); image files named by render checks are expected
-/// in `dir` already. Returns the page's path.
+/// Writes `dir/index.html` (creating `dir`), embedding the pictures that render checks
+/// wrote into `dir`: the page is one file that can be mailed or uploaded on its own.
+/// Returns the page's path.
 pub fn write_html(report: &GradeReport, dir: &Path) -> anyhow::Result<PathBuf> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let path = dir.join("index.html");
-    crate::atomic_file::write(&path, page(report).as_bytes())?;
+    crate::atomic_file::write(&path, page(report, Some(dir)).as_bytes())?;
     Ok(path)
 }

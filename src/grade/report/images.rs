@@ -1,6 +1,8 @@
-//! PNG files for the HTML report: a render, the reference, and the false-colour difference.
+//! Pictures for the HTML report of a render check: the render, the reference, the
+//! false-colour z-map, the map of failed pixel-channels (PNG), and the values behind them
+//! (JSON), which the page reads for the value under the cursor.
 
-use crate::grade::image_check::{ImageStats, false_colour};
+use crate::grade::image_check::{ImageStats, Z_CRITICAL, false_colour};
 use anyhow::Context;
 use std::path::Path;
 
@@ -32,9 +34,35 @@ fn write_png(path: &Path, width: usize, height: usize, rgb: Vec<u8>) -> anyhow::
         .with_context(|| format!("writing {}", path.display()))
 }
 
-/// Writes `<name>-student.png`, `<name>-reference.png` and `<name>-difference.png` into
-/// `dir` and returns their file names (relative to `dir`, as the HTML page links them).
-pub fn write_triple(
+/// The map of failed pixel-channels: yellow where any channel's |z| exceeds the per-pixel
+/// critical value (or is not finite), dark grey elsewhere.
+pub fn failed_mask(z: &[f64]) -> Vec<u8> {
+    z.chunks(3)
+        .flat_map(|px| {
+            if px.iter().any(|z| z.is_nan() || z.abs() > Z_CRITICAL) {
+                [255, 210, 0]
+            } else {
+                [40, 40, 40]
+            }
+        })
+        .collect()
+}
+
+/// The values of a render check's pictures, per pixel-channel (row-major, RGB): what the
+/// page shows under the cursor. Non-finite values are written as null.
+#[derive(serde::Serialize)]
+struct Values<'a> {
+    width: usize,
+    height: usize,
+    student: &'a [f32],
+    reference: &'a [f32],
+    z: &'a [f64],
+}
+
+/// Writes `<name>-student.png`, `<name>-reference.png`, `<name>-difference.png` (the
+/// z-map), `<name>-failed.png` and `<name>-values.json` into `dir` and returns their file
+/// names (relative to `dir`), in that order.
+pub fn write_pictures(
     dir: &Path,
     name: &str,
     student: &ImageStats,
@@ -56,12 +84,23 @@ pub fn write_triple(
         (format!("{stem}-student.png"), to_srgb8(&student.mean)),
         (format!("{stem}-reference.png"), to_srgb8(&reference.mean)),
         (format!("{stem}-difference.png"), false_colour(z)),
+        (format!("{stem}-failed.png"), failed_mask(z)),
     ];
     let mut names = Vec::new();
     for (file, rgb) in files {
         write_png(&dir.join(&file), student.width, student.height, rgb)?;
         names.push(file);
     }
+    let values = Values {
+        width: student.width,
+        height: student.height,
+        student: &student.mean,
+        reference: &reference.mean,
+        z,
+    };
+    let json = format!("{stem}-values.json");
+    crate::atomic_file::write(&dir.join(&json), serde_json::to_string(&values)?.as_bytes())?;
+    names.push(json);
     Ok(names)
 }
 
@@ -76,7 +115,7 @@ mod tests {
     }
 
     #[test]
-    fn a_triple_is_written() {
+    fn the_pictures_and_values_are_written() {
         let dir = tempfile::tempdir().unwrap();
         let img = ImageStats {
             width: 2,
@@ -84,8 +123,25 @@ mod tests {
             mean: vec![0.5; 6],
             variance: vec![0.01; 6],
         };
-        let files = write_triple(dir.path(), "cornell box", &img, &img, &[0.0; 6]).unwrap();
+        let files = write_pictures(
+            dir.path(),
+            "cornell box",
+            &img,
+            &img,
+            &[0.0, f64::NAN, 0.0, 0.0, 9.0, 0.0],
+        )
+        .unwrap();
         assert_eq!(files[0], "cornell_box-student.png");
+        assert_eq!(files.len(), 5);
+        let values = std::fs::read_to_string(dir.path().join(&files[4])).unwrap();
+        assert!(
+            values.contains("\"z\":[0.0,null,0.0,0.0,9.0,0.0]"),
+            "{values}"
+        );
+        assert_eq!(
+            failed_mask(&[0.0, 0.0, 0.0, 0.0, 9.0, 0.0])[..6],
+            [40, 40, 40, 255, 210, 0]
+        );
         for f in files {
             assert!(dir.path().join(f).exists());
         }
