@@ -62,14 +62,10 @@ const CONFIG: StudyConfig = StudyConfig {
     runs: 1,
 };
 
+/// The built-in irradiance study with the reference's strategies and [`BiasedCosine`],
+/// run with `config`; the study's reference floor.
 #[cfg(feature = "solutions")]
-fn summary<'a>(summaries: &'a [Summary], name: &str) -> &'a Summary {
-    summaries.iter().find(|s| s.strategy == name).unwrap()
-}
-
-#[cfg(feature = "solutions")]
-#[test]
-fn unbiased_strategies_fall_like_one_over_spp_and_a_biased_one_flattens() {
+fn irradiance_with_a_biased_cosine(config: &StudyConfig) -> (StudyResult, f64) {
     use pbrlab_solutions::TASKS as Reference;
     let study = builtin("irradiance", Reference).unwrap();
     let biased = BiasedCosine {
@@ -80,13 +76,25 @@ fn unbiased_strategies_fall_like_one_over_spp_and_a_biased_one_flattens() {
     let result = run_study(
         &strategies,
         &study.reference,
-        &CONFIG,
+        config,
         &ProgressBar::hidden(),
     )
     .unwrap();
+    (result, study.reference_floor)
+}
+
+#[cfg(feature = "solutions")]
+fn summary<'a>(summaries: &'a [Summary], name: &str) -> &'a Summary {
+    summaries.iter().find(|s| s.strategy == name).unwrap()
+}
+
+#[cfg(feature = "solutions")]
+#[test]
+fn unbiased_strategies_fall_like_one_over_spp_and_a_biased_one_flattens() {
+    let (result, floor) = irradiance_with_a_biased_cosine(&CONFIG);
     assert!(result.failures.is_empty(), "{:?}", result.failures);
     assert_eq!(result.points.len(), 3 * 11);
-    let summaries = summarise(&result.points, study.reference_floor);
+    let summaries = summarise(&result.points, floor);
 
     for name in ["uniform", "cosine"] {
         let s = summary(&summaries, name);
@@ -246,25 +254,12 @@ fn scene_variants_follow_what_the_scene_contains() {
 #[test]
 fn repeated_runs_give_intervals_and_a_bias_test_that_flags_only_the_biased_strategy() {
     use pbrlab::converge::study::equal_time;
-    use pbrlab_solutions::TASKS as Reference;
-    let study = builtin("irradiance", Reference).unwrap();
-    let biased = BiasedCosine {
-        skies: Arc::new(irradiance::skies(irradiance::PIXELS)),
-    };
-    let mut strategies: Vec<&dyn Strategy> = study.strategies.iter().map(|s| s.as_ref()).collect();
-    strategies.push(&biased);
     let config = StudyConfig {
         max_spp: 64,
         runs: 16,
         ..CONFIG
     };
-    let result = run_study(
-        &strategies,
-        &study.reference,
-        &config,
-        &ProgressBar::hidden(),
-    )
-    .unwrap();
+    let (result, floor) = irradiance_with_a_biased_cosine(&config);
     assert_eq!(result.points.len(), 3 * 7);
     for p in &result.points {
         assert_eq!(p.runs, 16);
@@ -272,7 +267,7 @@ fn repeated_runs_give_intervals_and_a_bias_test_that_flags_only_the_biased_strat
         assert!(lo < p.rel_mse && p.rel_mse < hi, "{p:?}");
         assert!(p.rel_var > 0.0 && p.rel_var <= p.rel_mse * 1.5, "{p:?}");
     }
-    let summaries = summarise(&result.points, study.reference_floor);
+    let summaries = summarise(&result.points, floor);
     for name in ["uniform", "cosine"] {
         let test = summary(&summaries, name)
             .bias

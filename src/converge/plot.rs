@@ -132,12 +132,7 @@ fn draw<DB: DrawingBackend>(
         .y_label_formatter(&|y| format!("{y:.0e}"))
         .draw()?;
 
-    let mut names: Vec<&str> = Vec::new();
-    for p in &usable {
-        if !names.contains(&p.strategy.as_str()) {
-            names.push(&p.strategy);
-        }
-    }
+    let names = super::study::strategy_names(usable.iter().copied());
     for (k, name) in names.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
         // In sample-count order: at low spp the time is noisy and need not increase.

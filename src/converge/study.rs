@@ -449,10 +449,8 @@ pub fn upper_levels(points: &[&Point]) -> usize {
     n.div_ceil(2).max(3.min(n))
 }
 
-/// One [`Summary`] per strategy, in order of first appearance. `reference_floor` is the
-/// study's [`Study::reference_floor`]: the slopes are fitted to relMSE minus that floor,
-/// on the levels above [`FLOOR_MARGIN`] times it.
-pub fn summarise(points: &[Point], reference_floor: f64) -> Vec<Summary> {
+/// The strategies of `points`, in order of first appearance.
+pub fn strategy_names<'p>(points: impl IntoIterator<Item = &'p Point>) -> Vec<&'p str> {
     let mut names: Vec<&str> = Vec::new();
     for p in points {
         if !names.contains(&p.strategy.as_str()) {
@@ -460,6 +458,13 @@ pub fn summarise(points: &[Point], reference_floor: f64) -> Vec<Summary> {
         }
     }
     names
+}
+
+/// One [`Summary`] per strategy, in order of first appearance. `reference_floor` is the
+/// study's [`Study::reference_floor`]: the slopes are fitted to relMSE minus that floor,
+/// on the levels above [`FLOOR_MARGIN`] times it.
+pub fn summarise(points: &[Point], reference_floor: f64) -> Vec<Summary> {
+    strategy_names(points)
         .into_iter()
         .map(|name| {
             let mut mine: Vec<&Point> = points.iter().filter(|p| p.strategy == name).collect();
@@ -516,12 +521,7 @@ pub fn summarise(points: &[Point], reference_floor: f64) -> Vec<Summary> {
 /// interpolated between its two nearest points on log-log axes (relMSE ∝ 1/time in
 /// between, for an unbiased estimator). `None` without points.
 pub fn equal_time(points: &[Point]) -> Option<(f64, Vec<(String, f64)>)> {
-    let mut names: Vec<&str> = Vec::new();
-    for p in points {
-        if !names.contains(&p.strategy.as_str()) {
-            names.push(&p.strategy);
-        }
-    }
+    let names = strategy_names(points);
     let curves: Vec<(&str, Vec<&Point>)> = names
         .into_iter()
         .map(|name| {
