@@ -260,6 +260,10 @@ fn hint_shows_one_new_level_per_call_and_remembers_it() {
     let first = hint(&[]);
     assert!(first.contains(&format!("hint 1/{levels}")), "{first}");
     assert!(!first.contains(&format!("hint 2/{levels}")), "{first}");
+    assert!(
+        first.contains("`pbrlab hint fresnel_schlick` again shows hint 2"),
+        "{first}"
+    );
     let second = hint(&[]);
     assert!(second.contains(&format!("hint 2/{levels}")), "{second}");
     assert!(!second.contains(&format!("hint 1/{levels}:")), "{second}");

@@ -301,7 +301,11 @@ fn watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(dir: &Path) {
         &["not attempted", "h: next hint for reflect"],
     );
     key(&mut watch, "h");
-    expect(&mut watch, "after h", &["hint 1/"]);
+    expect(
+        &mut watch,
+        "after h",
+        &["hint 1/", "Still stuck? `h` again shows hint 2"],
+    );
     let file = dir.join("exercises/reflect.rs");
     std::fs::copy(root().join("solutions/reflect.rs"), &file).unwrap();
     expect(

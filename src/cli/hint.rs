@@ -34,6 +34,12 @@ fn load_seen() -> BTreeMap<String, usize> {
 /// next call goes one level further: one step at a time, as the hints are written.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
+    show(task, &args, &format!("`pbrlab hint {}` again", task.name()))
+}
+
+/// [`run`] for `task`; `again` says how to ask for the next level (the command, or a key
+/// in `pbrlab watch`).
+pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
     let info = task.info();
     let levels = info.hints.len();
     if levels == 0 {
@@ -69,11 +75,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     if last < levels {
-        println!(
-            "\nStill stuck? `pbrlab hint {}` again shows hint {}.",
-            info.id,
-            last + 1
-        );
+        println!("\nStill stuck? {again} shows hint {}.", last + 1);
     } else if args.level.is_none() && !args.all && before == levels {
         println!("\nThat was the last hint of {}.", info.id);
     }

@@ -117,11 +117,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             Some('h') => {
                 let task = hint_task(saved, &args.tasks);
                 println!();
-                super::hint::run(super::hint::Args {
+                let args = super::hint::Args {
                     task: task.name().into(),
                     level: None,
                     all: false,
-                })?;
+                };
+                super::hint::show(task, &args, "`h` again")?;
                 prompt(&exercises, task);
                 false
             }
