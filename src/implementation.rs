@@ -48,6 +48,16 @@ pub fn try_reference() -> Option<&'static TaskFns> {
     installed().reference.as_ref()
 }
 
+/// The error for a command that needs the reference in a build without it, with the reason
+/// when the handout's compiled reference is missing or unusable
+/// ([`crate::compiled_reference`]).
+pub fn no_reference() -> String {
+    match crate::compiled_reference::unavailable() {
+        Some(why) => format!("this build has no reference solutions ({why})"),
+        None => "this build has no reference solutions".to_string(),
+    }
+}
+
 /// The reference solution: every task function from `solutions/`.
 ///
 /// # Panics

@@ -61,6 +61,7 @@ pub mod atomic_file;
 pub mod autograder;
 pub mod bsdf;
 pub mod cli;
+pub mod compiled_reference;
 pub mod converge;
 pub mod entropy;
 pub mod geometry;

@@ -1,6 +1,8 @@
 //! The task tables the root package's binaries (`pbrlab`, `pbrlab-worker`) link: the
-//! student's crate, and in the instructor build the reference's. A module of those
-//! binaries (`mod linked_tables;` in each), not of the framework beside it in `src/`.
+//! student's crate, and in the instructor build the reference's (in the handout, the
+//! compiled reference `pbrlab handout` put in `tools/reference/`, when it fits this build).
+//! A module of those binaries (`mod linked_tables;` in each), not of the framework beside
+//! it in `src/`.
 
 use pbrlab::implementation::{Implementations, install};
 
@@ -11,6 +13,8 @@ pub fn install_linked() {
         #[cfg(feature = "solutions")]
         reference: Some(pbrlab_solutions::TASKS),
         #[cfg(not(feature = "solutions"))]
-        reference: None,
+        reference: pbrlab::compiled_reference::load_in(std::path::Path::new(env!(
+            "CARGO_MANIFEST_DIR"
+        ))),
     });
 }

@@ -25,14 +25,7 @@ const WINDOW: usize = 4;
 /// into the handout brings one along, while a guard or two in common with framework code
 /// (an early return when a cosine is negative) does not.
 fn solution_windows() -> Vec<String> {
-    // The exercises as shipped, whatever the working copy holds.
-    let mut shared = String::new();
-    for task in pbrlab::worksheet::TaskId::ALL {
-        shared += &pbrlab::handout::stubs::shipped(root(), task).unwrap();
-    }
-    for other in ["lib.rs", "build.rs"] {
-        shared += &std::fs::read_to_string(root().join("exercises").join(other)).unwrap();
-    }
+    let shared = shipped_exercises();
     let mut windows = Vec::new();
     for entry in std::fs::read_dir(root().join("solutions")).unwrap() {
         let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
@@ -43,6 +36,114 @@ fn solution_windows() -> Vec<String> {
         windows.extend(lines.windows(WINDOW).map(|w| w.join("\n")));
     }
     windows
+}
+
+/// The exercises as shipped, whatever the working copy holds: every stub, `lib.rs` and
+/// `build.rs`.
+fn shipped_exercises() -> String {
+    let mut shared = String::new();
+    for task in pbrlab::worksheet::TaskId::ALL {
+        shared += &pbrlab::handout::stubs::shipped(root(), task).unwrap();
+    }
+    for other in ["lib.rs", "build.rs"] {
+        shared += &std::fs::read_to_string(root().join("exercises").join(other)).unwrap();
+    }
+    shared
+}
+
+/// The shortest reference line that counts as distinctive.
+const DISTINCTIVE: usize = 24;
+
+/// Reference lines the handout's framework shares on purpose, each with the reason: a call
+/// of the framework's API, a destructuring its types force, or a textbook identity the
+/// framework needs for itself; none is a decision a task asks for.
+const FRAMEWORK_LINES: &[(&str, &str)] = &[
+    (
+        "LightSample::Environment { wi, radiance, pdf } => {",
+        "the fields of the framework's light sample",
+    ),
+    (
+        "LightSample::Point { p, intensity, prob } => {",
+        "the fields of the framework's light sample",
+    ),
+    (
+        "Vec3::new(sin_theta * cos_phi, sin_theta * sin_phi, cos_theta)",
+        "spherical to Cartesian coordinates (src/math/spherical.rs)",
+    ),
+    (
+        "if scene.occluded(&ray, t_max) {",
+        "the framework's shadow-ray query",
+    ),
+    (
+        "let cos_i = cos_theta_i.abs().min(1.0);",
+        "a cosine clamped to [0, 1] in the framework's exact Fresnel equations",
+    ),
+    (
+        "let cos_t = (1.0 - sin2_t).max(0.0).sqrt();",
+        "cos from sin² in the framework's exact Fresnel equations",
+    ),
+    ("let dist2 = d.length_squared();", "a squared distance"),
+    (
+        "let f = bsdf.eval(t, wo, wi);",
+        "the framework's BSDF evaluation",
+    ),
+    (
+        "let majorant = medium.majorant();",
+        "the framework's medium query",
+    ),
+    ("let mut radiance = Vec3::ZERO;", "an accumulator"),
+];
+
+/// Every distinctive line of the reference: a code line of at least [`DISTINCTIVE`]
+/// characters that the shipped exercises do not already give (their text states some steps
+/// on purpose) and that is not one of the [`FRAMEWORK_LINES`].
+fn distinctive_lines() -> Vec<String> {
+    let shared = shipped_exercises();
+    let mut lines = Vec::new();
+    for text in reference_sources() {
+        lines.extend(
+            code_lines(&text)
+                .into_iter()
+                .filter(|l| l.len() >= DISTINCTIVE && !l.starts_with("use "))
+                .filter(|l| !shared.contains(l))
+                .filter(|l| !FRAMEWORK_LINES.iter().any(|(f, _)| f == l))
+                .map(str::to_string),
+        );
+    }
+    lines.sort();
+    lines.dedup();
+    lines
+}
+
+/// The text of every source file of the reference.
+fn reference_sources() -> Vec<String> {
+    std::fs::read_dir(root().join("solutions"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect()
+}
+
+/// The distinctive reference lines that occur in `text`, anywhere in a line.
+fn reference_lines_in<'a>(text: &str, lines: &'a [String]) -> Vec<&'a str> {
+    lines
+        .iter()
+        .filter(|l| text.contains(l.as_str()))
+        .map(String::as_str)
+        .collect()
+}
+
+#[test]
+fn the_framework_lines_the_reference_shares_are_still_reference_lines() {
+    let all = reference_sources().concat();
+    let all = code_lines(&all);
+    for (line, why) in FRAMEWORK_LINES {
+        assert!(
+            all.contains(line),
+            "no longer a reference line ({why}): {line}"
+        );
+    }
 }
 
 #[test]
@@ -115,17 +216,39 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
         windows.iter().any(|w| copied.contains(w.as_str())),
         "the comparison finds copied code"
     );
+    // No handout file has a distinctive reference line, in code, comments or data.
+    let lines = distinctive_lines();
+    assert!(
+        lines.len() > 150,
+        "too few reference lines ({})",
+        lines.len()
+    );
+    let roulette = std::fs::read_to_string(root().join("solutions/path_trace.rs")).unwrap();
+    assert!(
+        !reference_lines_in(&roulette, &lines).is_empty(),
+        "the comparison finds a reference line"
+    );
     // The handout as written (its exercises are the committed stubs).
     let handout = tempfile::tempdir().unwrap();
     pbrlab::handout::write(root(), handout.path()).expect("handout written");
-    for name in names.iter().filter(|n| n.ends_with(".rs")) {
-        let text = std::fs::read_to_string(handout.path().join(name)).unwrap();
-        let code = code_lines(&text).join("\n");
-        for window in &windows {
-            assert!(
-                !code.contains(window.as_str()),
-                "{name} contains reference code:\n{window}"
-            );
+    for name in &names {
+        let Ok(text) = std::fs::read_to_string(handout.path().join(name)) else {
+            continue;
+        };
+        let found = reference_lines_in(&text, &lines);
+        assert!(
+            found.is_empty(),
+            "{name} has reference lines:\n{}",
+            found.join("\n")
+        );
+        if name.ends_with(".rs") {
+            let code = code_lines(&text).join("\n");
+            for window in &windows {
+                assert!(
+                    !code.contains(window.as_str()),
+                    "{name} contains reference code:\n{window}"
+                );
+            }
         }
     }
 }
@@ -194,6 +317,8 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
     let tmp = tempfile::tempdir().unwrap();
     let dir: PathBuf = tmp.path().join("student");
     pbrlab::handout::write(root(), &dir).expect("handout written");
+    let library =
+        pbrlab::handout::compiled_reference::build(root(), &dir).expect("reference compiled");
     pbrlab::handout::stubs::commit(&dir).expect("the handout committed");
     let test = cargo(&dir, &["test", "--release"]);
     assert!(
@@ -272,6 +397,61 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         test.status.success(),
         "with four exercises written: {}",
         String::from_utf8_lossy(&test.stderr)
+    );
+    mixed_renders_take_the_compiled_reference_that_fits_the_build(&dir, &library);
+}
+
+/// `render --impl mixed` in the handout at `dir`: the student's written tasks with the
+/// compiled reference at `library` for the rest; and, once the library's signature is
+/// altered (as a library from another build would be), a refusal that says what differs.
+fn mixed_renders_take_the_compiled_reference_that_fits_the_build(dir: &Path, library: &Path) {
+    let render = |output: &str| {
+        cargo(
+            dir,
+            &[
+                "run",
+                "--release",
+                "-q",
+                "--",
+                "render",
+                "scenes/cornell.yaml",
+                "--impl",
+                "mixed",
+                "--spp",
+                "1",
+                "--quiet",
+                "-o",
+                output,
+            ],
+        )
+    };
+    let out = render("renders/mixed.exr");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("your code renders: cosine_sample"),
+        "{stderr}"
+    );
+    let image = image::open(dir.join("renders/mixed.exr")).expect("the render is an image");
+    let pixels = image.to_rgb32f();
+    assert!(
+        pixels.pixels().any(|p| p.0.iter().any(|c| *c > 0.0)),
+        "a black render"
+    );
+    let mut bytes = std::fs::read(library).unwrap();
+    let at = bytes
+        .windows(9)
+        .position(|w| w == b"; sources")
+        .expect("the signature is in the library")
+        + 10;
+    bytes[at] = if bytes[at] == b'0' { b'1' } else { b'0' };
+    std::fs::write(library, bytes).unwrap();
+    let out = render("renders/refused.exr");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        stderr.contains("was built for another build") && stderr.contains("sources "),
+        "{stderr}"
     );
 }
 

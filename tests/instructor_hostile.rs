@@ -126,6 +126,39 @@ fn open_sockets() {
     }
 }
 
+/// New machine code: what loading a library (the handout's compiled reference, carried in
+/// a submission) or generated code needs, an executable mapping or an executable page.
+fn load_code() {
+    let page = 4096;
+    // SAFETY: plain system calls on memory this function owns; nothing is executed.
+    unsafe {
+        let mapped = libc::mmap(
+            std::ptr::null_mut(),
+            page,
+            libc::PROT_READ | libc::PROT_EXEC,
+            libc::MAP_PRIVATE | libc::MAP_ANONYMOUS,
+            -1,
+            0,
+        );
+        if mapped != libc::MAP_FAILED {
+            breach("mapped executable memory");
+        }
+        let writable = libc::mmap(
+            std::ptr::null_mut(),
+            page,
+            libc::PROT_READ | libc::PROT_WRITE,
+            libc::MAP_PRIVATE | libc::MAP_ANONYMOUS,
+            -1,
+            0,
+        );
+        if writable == libc::MAP_FAILED {
+            println!("could not map writable memory (it should work)");
+        } else if libc::mprotect(writable, page, libc::PROT_READ | libc::PROT_EXEC) == 0 {
+            breach("made a page executable");
+        }
+    }
+}
+
 /// Output that used to break the grader: invalid UTF-8, and one line of 200 MB.
 fn garble_output() {
     let mut out = std::io::stdout().lock();
@@ -170,6 +203,7 @@ fn worker_entry() {
         "spawn" => || ONCE.call_once(spawn_daemon),
         "sockets" => || ONCE.call_once(open_sockets),
         "output" => || ONCE.call_once(garble_output),
+        "load" => || ONCE.call_once(load_code),
         other => panic!("unknown attack {other}"),
     });
     pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
@@ -246,6 +280,11 @@ fn no_process_can_be_started_to_outlive_the_grade_or_hold_its_pipes() {
 #[test]
 fn no_socket_can_be_opened() {
     attack_fails("sockets");
+}
+
+#[test]
+fn no_library_or_generated_code_can_be_loaded() {
+    attack_fails("load");
 }
 
 #[test]

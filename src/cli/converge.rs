@@ -86,23 +86,23 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
     if let Some(file) = &args.reference {
         return scene_study::<T, T>(path, tasks, &base, ReferenceSource::File(file), &args.out);
     }
-    #[cfg(feature = "solutions")]
-    let source = ReferenceSource::Render {
-        tasks: *crate::implementation::reference(),
-        label: "reference",
-        spp,
-    };
-    #[cfg(not(feature = "solutions"))]
-    let source = {
-        eprintln!(
-            "warning: no reference solutions in this build: the reference is rendered with \
-             your own code, so a bias in it cannot show (pass --reference FILE.exr)"
-        );
-        ReferenceSource::Render {
-            tasks: tasks.clone(),
-            label: "student",
+    if let Some(reference) = crate::implementation::try_reference() {
+        let source = ReferenceSource::Render {
+            tasks: *reference,
+            label: "reference",
             spp,
-        }
+        };
+        return scene_study(path, tasks, &base, source, &args.out);
+    }
+    eprintln!(
+        "warning: {}: the reference is rendered with your own code, so a bias in it cannot \
+         show (pass --reference FILE.exr)",
+        crate::implementation::no_reference()
+    );
+    let source = ReferenceSource::Render {
+        tasks: tasks.clone(),
+        label: "student",
+        spp,
     };
     scene_study(path, tasks, &base, source, &args.out)
 }
@@ -121,19 +121,21 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             sandbox(&args)?;
             run_with(*crate::implementation::student(), &args)
         }
-        #[cfg(feature = "solutions")]
-        ImplChoice::Reference => run_with(*crate::implementation::reference(), &args),
-        #[cfg(feature = "solutions")]
-        ImplChoice::Mixed => {
+        ImplChoice::Reference | ImplChoice::Mixed => {
+            let Some(reference) = crate::implementation::try_reference() else {
+                bail!(
+                    "{}; use --impl student",
+                    crate::implementation::no_reference()
+                )
+            };
+            if args.implementation == ImplChoice::Reference {
+                return run_with(*reference, &args);
+            }
             let imp = crate::implementation::mixed(crate::implementation::student_written(
                 &crate::grade::isolation::Launcher::current_exe()?,
             ));
             sandbox(&args)?;
             run_with(imp, &args)
-        }
-        #[cfg(not(feature = "solutions"))]
-        ImplChoice::Reference | ImplChoice::Mixed => {
-            bail!("this build has no reference solutions; use --impl student")
         }
     }
 }

@@ -9,6 +9,10 @@ use std::path::PathBuf;
 pub struct Args {
     /// Where to write the student repository (must not exist, or be empty).
     pub dir: PathBuf,
+    /// Leave out the compiled reference (tools/reference/), without which the handout
+    /// cannot render with `--impl mixed` or `reference`.
+    #[arg(long)]
+    pub without_reference: bool,
 }
 
 /// Writes the student repository.
@@ -28,7 +32,13 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             written.join(", ")
         );
     }
-    let files = handout::write(crate::repository_root(), &args.dir)?;
+    let root = crate::repository_root();
+    let files = handout::write(root, &args.dir)?;
+    if !args.without_reference {
+        eprintln!("Compiling the reference into a shared library for mixed renders…");
+        let library = handout::compiled_reference::build(root, &args.dir)?;
+        eprintln!("Wrote {}", library.display());
+    }
     // Without git the handout still works; only `pbrlab reset` needs the first commit.
     if let Err(e) = handout::stubs::commit(&args.dir) {
         eprintln!("warning: the handout is not a git repository ({e:#}); `pbrlab reset` needs one");

@@ -20,7 +20,8 @@ pub struct Args {
     /// The scene file (default: scenes/cornell.yaml).
     pub scene: Option<PathBuf>,
     /// Whose task code renders (one of the possible values below; by default the
-    /// reference where this build has it, otherwise yours).
+    /// reference where this build has it, otherwise yours). In the handout, `mixed` takes
+    /// the compiled reference (tools/reference/) for the tasks you have not written.
     #[arg(long = "impl", value_enum)]
     pub implementation: Option<ImplChoice>,
     /// Samples per pixel (overrides the scene's; with --resume, the new total).
@@ -175,7 +176,10 @@ pub fn run(args: Args) -> Result<()> {
         PathBuf::from("renders").join(format!("{stem}.exr"))
     });
     if choice != ImplChoice::Student && crate::implementation::try_reference().is_none() {
-        bail!("this build has no reference solutions: use `--impl student`")
+        bail!(
+            "{}: use `--impl student`",
+            crate::implementation::no_reference()
+        )
     }
     // What renders: the student's code, the reference, or the reference with the tasks the
     // student has written (probed in workers, before the sandbox forbids new processes).

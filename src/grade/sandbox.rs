@@ -8,7 +8,9 @@
 //!   `/proc/self/mem`, the repository, `target/` or the stored expected data fails.
 //! - **seccomp** (through `seccompiler`): no new processes (`fork`, `vfork`, `clone`
 //!   without `CLONE_THREAD`, `execve`), no sockets, no `ptrace` or cross-process memory
-//!   access, no `kill` of other processes, no new sessions or namespaces. Threads still work
+//!   access, no `kill` of other processes, no new sessions or namespaces, no executable
+//!   memory (`mmap`/`mprotect` with `PROT_EXEC`: no library or generated code can be
+//!   loaded; the binary's own libraries are loaded before the filter). Threads still work
 //!   (`clone3` answers `ENOSYS`, so the C library falls back to `clone`, which is checked).
 //! - **Resource limits** (through `rlimit`): address space, CPU seconds, size of a written
 //!   file, open files, and no core dumps.
@@ -234,6 +236,20 @@ mod syscalls {
             0,
         )?;
         refused.insert(libc::SYS_clone, vec![SeccompRule::new(vec![process])?]);
+        // No new machine code: memory cannot be mapped or made executable, so no library
+        // (the handout's compiled reference carried in a submission, say) can be loaded.
+        let executable = || {
+            SeccompCondition::new(
+                2,
+                SeccompCmpArgLen::Dword,
+                SeccompCmpOp::MaskedEq(libc::PROT_EXEC as u64),
+                libc::PROT_EXEC as u64,
+            )
+            .and_then(|c| SeccompRule::new(vec![c]))
+        };
+        for call in [libc::SYS_mmap, libc::SYS_mprotect, libc::SYS_pkey_mprotect] {
+            refused.insert(call, vec![executable()?]);
+        }
         // `clone3` passes its flags in memory, out of a filter's reach: answer "no such call"
         // and the C library uses `clone` instead.
         let clone3 = program(

@@ -126,7 +126,8 @@ fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<Pat
 
 /// The handout's Cargo.toml: without the reference's crate (every line that names
 /// `solutions`: the workspace member, the dependency and the default feature; the feature
-/// itself stays, empty, so `cfg(feature = "solutions")` is still a known condition), and
+/// itself stays, empty, so `cfg(feature = "solutions")` is still a known condition),
+/// without workspace members whose folder is left out (the reference library's), and
 /// without any bench or test target whose file is left out.
 fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
     let mut out = String::new();
@@ -163,7 +164,8 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
             section.clear();
         } else if section_header.trim() == "[features]" && line.starts_with("solutions") {
             section.push_str(EMPTY_SOLUTIONS_FEATURE);
-        } else if !line.contains("solutions") {
+        } else if !line.contains("solutions") && !names_missing_member(&section_header, line, kept)
+        {
             section.push_str(line);
         }
     }
@@ -175,6 +177,20 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
         bail!("cannot leave the solutions out of Cargo.toml: `{line}` names them");
     }
     Ok(out)
+}
+
+/// True when `line` of the `[workspace]` section is a member (`    "dir",`) whose folder has
+/// no file in the handout.
+fn names_missing_member(section_header: &str, line: &str, kept: &[PathBuf]) -> bool {
+    let Some(dir) = line
+        .trim()
+        .trim_end_matches(',')
+        .strip_prefix('"')
+        .and_then(|l| l.strip_suffix('"'))
+    else {
+        return false;
+    };
+    section_header.trim() == "[workspace]" && !kept.iter().any(|f| f.starts_with(dir))
 }
 
 /// The handout's `solutions` feature: declared, and empty.
@@ -223,8 +239,12 @@ mod tests {
 
     #[test]
     fn cargo_toml_loses_default_features_and_dropped_targets() {
-        let text = "[workspace]\nmembers = [\n    \"src\",\n    \"solutions\",\n]\n\n[package]\nname = \"x\"\n\n[features]\ndefault = [\"solutions\"]\nsolutions = [\"dep:pbrlab-solutions\"]\n\n[dependencies]\npbrlab-solutions = { path = \"solutions\", optional = true }\n\n[[bench]]\nname = \"tasks\"\nharness = false\n\n[[bench]]\nname = \"render\"\nharness = false\n";
-        let out = rewrite_cargo_toml(text, &[PathBuf::from("benches/render.rs")]).unwrap();
+        let text = "[workspace]\nmembers = [\n    \"src\",\n    \"solutions\",\n    \"tools/lib\",\n]\n\n[package]\nname = \"x\"\n\n[features]\ndefault = [\"solutions\"]\nsolutions = [\"dep:pbrlab-solutions\"]\n\n[dependencies]\npbrlab-solutions = { path = \"solutions\", optional = true }\n\n[[bench]]\nname = \"tasks\"\nharness = false\n\n[[bench]]\nname = \"render\"\nharness = false\n";
+        let kept = [
+            PathBuf::from("benches/render.rs"),
+            PathBuf::from("src/lib.rs"),
+        ];
+        let out = rewrite_cargo_toml(text, &kept).unwrap();
         assert!(
             !out.replace("solutions = []\n", "").contains("solutions"),
             "{out}"

@@ -5,8 +5,10 @@
 //! workflow) and a Cargo.toml whose default features leave the solutions out. Its exercise
 //! files are the shipped stubs as committed ([`stubs::shipped`]), not whatever the
 //! instructor's working copy holds. It builds, renders what the student has written, and
-//! grades the public cases from the stored expected data.
+//! grades the public cases from the stored expected data. [`compiled_reference`] adds the
+//! reference as a shared library, so mixed renders work there without its source.
 
+pub mod compiled_reference;
 pub mod manifest;
 pub mod stubs;
 

@@ -15,6 +15,7 @@ use crate::scene::schema::TransmittanceEstimator;
 use crate::scene::{MediumKind, Scene};
 use crate::worksheet::Tasks;
 use glam::Vec3;
+use std::cmp::Ordering;
 
 /// Iteration bound handed to `delta_tracking` and ratio tracking.
 pub const MAX_TRACKING_STEPS: u32 = 100_000;
@@ -122,12 +123,13 @@ fn roulette(applies: bool, beta: &mut Vec3, sampler: &mut Sampler) -> bool {
     if !applies {
         return true;
     }
-    let q = beta.max_element().min(0.95);
-    if (q.is_nan() || q <= 0.0) || sampler.next_1d() >= q {
-        return false;
+    let survival = beta.max_element().min(0.95);
+    let survives =
+        survival.partial_cmp(&0.0) == Some(Ordering::Greater) && sampler.next_1d() < survival;
+    if survives {
+        *beta /= survival;
     }
-    *beta /= q;
-    true
+    survives
 }
 
 /// Light sampling at a vertex: one light sample, its transmittance, no MIS.
@@ -169,7 +171,8 @@ fn next_event<T: Tasks>(
         LightSample::Point { p, intensity, prob } => {
             let d = p - x;
             let dist2 = d.length_squared();
-            if (dist2.is_nan() || dist2 <= 0.0) || (prob.is_nan() || prob <= 0.0) {
+            let positive = |v: f32| v.partial_cmp(&0.0) == Some(Ordering::Greater);
+            if !(positive(dist2) && positive(prob)) {
                 return Vec3::ZERO;
             }
             let dist = dist2.sqrt();

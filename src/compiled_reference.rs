@@ -1,0 +1,204 @@
+//! The reference in compiled form, for the student handout: a shared library
+//! (`tools/reference/`, built by `pbrlab handout` from `tools/reference-library/`) that
+//! the handout's binaries load, so `render --impl mixed` takes the reference for the tasks a
+//! student has not written, without the reference's source.
+//!
+//! The library holds its own copy of this framework, and the handout's binaries hand it
+//! their scenes, samplers and task tables by reference, in Rust's own calling convention.
+//! That is sound only when both copies were compiled from the same sources, by the same
+//! compiler, for the same target, with the same features and dependency versions: the
+//! library says what it was built from ([`abi_signature`]: `PBRLAB_ABI_BUILD`, set by the
+//! build script, plus the sizes of the types that cross), and [`load`] refuses a library
+//! whose signature is not this build's, saying what differs. Two C functions cross before
+//! the check: [`ABI_SYMBOL`] and [`TASKS_SYMBOL`].
+//!
+//! Limits of the shared copy, all harmless to a render: the library counts its rays in its
+//! own counter, so a mixed render's rays-per-second leaves out the rays the reference casts;
+//! and a panic inside the library's code cannot be caught by this build's (another copy of
+//! the standard library), so it ends the process. The reference does not panic on a scene
+//! that loaded.
+
+use crate::worksheet::TaskFns;
+use anyhow::{Context, bail};
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The exported C function that returns the library's [`abi_signature`]: it writes the
+/// length through its argument and returns a pointer to UTF-8 bytes that live as long as
+/// the library.
+pub const ABI_SYMBOL: &[u8] = b"pbrlab_reference_abi";
+
+/// The exported C function that returns a pointer to the library's [`TaskFns`] (the
+/// reference's table); read only after the signatures agree.
+pub const TASKS_SYMBOL: &[u8] = b"pbrlab_reference_tasks";
+
+/// The library's file name on this platform (`libpbrlab_reference.so` on Linux).
+pub fn file_name() -> String {
+    format!(
+        "{}pbrlab_reference{}",
+        std::env::consts::DLL_PREFIX,
+        std::env::consts::DLL_SUFFIX
+    )
+}
+
+/// Where a repository keeps its compiled reference: `tools/reference/` in it.
+pub fn path_in(repository: &Path) -> PathBuf {
+    repository.join("tools").join("reference").join(file_name())
+}
+
+/// Why [`load_in`] found no usable library, for messages.
+static UNAVAILABLE: OnceLock<String> = OnceLock::new();
+
+/// The compiled reference of the repository at `repository` ([`path_in`]), or `None`, with
+/// the reason kept for [`unavailable`] (no file, or a file this build cannot use).
+pub fn load_in(repository: &Path) -> Option<TaskFns> {
+    let path = path_in(repository);
+    let reason = match load(&path) {
+        Ok(Some(table)) => return Some(table),
+        Ok(None) => format!("no compiled reference at {}", path.display()),
+        Err(e) => format!("{e:#}"),
+    };
+    let _ = UNAVAILABLE.set(reason);
+    None
+}
+
+/// Why the last [`load_in`] returned `None`, when it was called.
+pub fn unavailable() -> Option<&'static str> {
+    UNAVAILABLE.get().map(String::as_str)
+}
+
+/// What this copy of the framework was built from and with, and the sizes of the types a
+/// call into the library passes: equal in the library and in the binary that loads it, or
+/// the library is not loaded.
+pub fn abi_signature() -> String {
+    use std::mem::{align_of, size_of};
+    macro_rules! layouts {
+        ($($t:ty),+) => {
+            [$(format!("{} {}/{}", stringify!($t), size_of::<$t>(), align_of::<$t>())),+].join(", ")
+        };
+    }
+    let layouts = layouts!(
+        TaskFns,
+        crate::scene::Scene,
+        crate::geometry::Hit,
+        crate::geometry::Ray,
+        crate::integrator::Segment,
+        crate::integrator::DirectLight,
+        crate::sampling::Sampler,
+        crate::optics::LayerStack,
+        crate::bsdf::PhongParams,
+        crate::bsdf::KajiyaKayParams,
+        crate::medium::FreeFlight,
+        glam::Vec3
+    );
+    format!("{}; layouts {layouts}", env!("PBRLAB_ABI_BUILD"))
+}
+
+/// Loads the compiled reference at `path` and returns its task table, or `None` when there
+/// is no file there. An error says why a library that is there cannot be used (built by
+/// another compiler, from other sources, …).
+///
+/// The library stays loaded for the rest of the process: its functions are in the table.
+pub fn load(path: &Path) -> anyhow::Result<Option<TaskFns>> {
+    if !path.exists() {
+        return Ok(None);
+    }
+    // SAFETY: loading runs the library's initialisers, which are those of Rust code built
+    // by `pbrlab handout` from this repository (no life-before-main of its own).
+    let library = unsafe { libloading::Library::new(path) }
+        .with_context(|| format!("loading {}", path.display()))?;
+    let theirs = {
+        // SAFETY: the symbol is `extern "C" fn(*mut usize) -> *const u8` in every library
+        // `tools/reference-library/` builds, which is the only kind `handout` writes here.
+        let abi: libloading::Symbol<unsafe extern "C" fn(*mut usize) -> *const u8> =
+            unsafe { library.get(ABI_SYMBOL) }.with_context(|| {
+                format!(
+                    "{} is not a pbrlab reference library (no ABI signature)",
+                    path.display()
+                )
+            })?;
+        let mut len = 0usize;
+        // SAFETY: the function returns `len` bytes that live as long as the library.
+        let bytes = unsafe { std::slice::from_raw_parts(abi(&mut len), len) };
+        String::from_utf8_lossy(bytes).into_owned()
+    };
+    let ours = abi_signature();
+    if theirs != ours {
+        bail!(
+            "{} was built for another build of this framework: {}. Rebuild it with the \
+             instructor's `pbrlab handout`, or build this repository as it was handed out \
+             (same Rust version: `{}`)",
+            path.display(),
+            differences(&theirs, &ours),
+            env!("PBRLAB_ABI_BUILD")
+                .split(';')
+                .next()
+                .unwrap_or_default()
+        );
+    }
+    // SAFETY: the signatures agree, so the library's `TaskFns` is this build's type; the
+    // function returns a pointer to a static of it.
+    let table = unsafe {
+        let tasks: libloading::Symbol<unsafe extern "C" fn() -> *const std::ffi::c_void> = library
+            .get(TASKS_SYMBOL)
+            .with_context(|| format!("{} has no task table", path.display()))?;
+        *tasks().cast::<TaskFns>()
+    };
+    std::mem::forget(library);
+    Ok(Some(table))
+}
+
+/// The parts of two [`abi_signature`]s that differ, as "library: …, this build: …".
+fn differences(library: &str, ours: &str) -> String {
+    let parts =
+        |s: &str| -> Vec<String> { s.split([';', ',']).map(|p| p.trim().to_string()).collect() };
+    let (theirs, mine) = (parts(library), parts(ours));
+    let only_theirs: Vec<&String> = theirs.iter().filter(|p| !mine.contains(p)).collect();
+    let only_mine: Vec<&String> = mine.iter().filter(|p| !theirs.contains(p)).collect();
+    let list = |v: &[&String]| v.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ");
+    format!(
+        "the library has {}; this build has {}",
+        list(&only_theirs),
+        list(&only_mine)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_difference_names_the_parts_that_differ() {
+        let a = "rustc 1.95.0; target x; sources 01; layouts Scene 10/8, Hit 4/4";
+        let b = "rustc 1.96.0; target x; sources 01; layouts Scene 12/8, Hit 4/4";
+        assert_eq!(
+            differences(a, b),
+            "the library has rustc 1.95.0, layouts Scene 10/8; this build has rustc 1.96.0, layouts Scene 12/8"
+        );
+    }
+
+    #[test]
+    fn the_signature_says_what_the_build_is_made_of() {
+        let s = abi_signature();
+        for part in [
+            "rustc ",
+            "target ",
+            "features [",
+            "sources ",
+            "dependencies ",
+            "TaskFns ",
+        ] {
+            assert!(s.contains(part), "{part} missing from {s}");
+        }
+    }
+
+    #[test]
+    fn a_missing_library_is_none_and_another_file_is_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(load(&path_in(dir.path())).unwrap().is_none());
+        let path = dir.path().join(file_name());
+        std::fs::write(&path, b"not a library").unwrap();
+        let err = format!("{:#}", load(&path).unwrap_err());
+        assert!(err.contains(&path.display().to_string()), "{err}");
+    }
+}
