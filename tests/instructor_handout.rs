@@ -429,7 +429,7 @@ fn mixed_renders_take_the_compiled_reference_that_fits_the_build(dir: &Path, lib
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
     assert!(
-        stderr.contains("your code renders: cosine_sample"),
+        stderr.contains("your code renders: reflect, cosine_sample"),
         "{stderr}"
     );
     let image = image::open(dir.join("renders/mixed.exr")).expect("the render is an image");

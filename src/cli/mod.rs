@@ -8,6 +8,7 @@ mod handout;
 mod hint;
 mod keys;
 mod needs;
+mod power;
 mod rebuild;
 pub mod render;
 mod reset;
@@ -56,6 +57,9 @@ pub enum Command {
     Stability(stability::Args),
     /// Error against run time for each sampling strategy: CSV, log-log plot and slopes.
     Converge(converge::Args),
+    /// How large an error the statistical checks catch, measured on the reference.
+    #[command(hide = !cfg!(feature = "solutions"))]
+    Power(power::Args),
 }
 
 /// Runs the command line.
@@ -89,6 +93,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Needs(args)) => needs::run(args),
         Some(Command::Stability(args)) => stability::run(args),
         Some(Command::Converge(args)) => converge::run(args),
+        Some(Command::Power(args)) => power::run(args),
         None => render::run(render::Args::default()),
     }
 }

@@ -430,9 +430,14 @@ impl SampleCall {
     /// pdf (16 × 16 midpoints per cell).
     #[cfg(feature = "solutions")]
     pub fn reference_target(&self) -> super::sampling::SamplingTarget {
-        let reference = *crate::implementation::reference();
+        self.target(crate::implementation::reference())
+    }
+
+    /// The distribution over [`SampleCall::bins`] that `t`'s pdf says its sampler follows
+    /// (16 × 16 midpoints per cell).
+    pub fn target(&self, t: &impl Tasks) -> super::sampling::SamplingTarget {
         let bins = self.bins();
-        let cells = bins.integrate(|w| self.pdf(&reference, w) as f64, 16);
+        let cells = bins.integrate(|w| self.pdf(t, w) as f64, 16);
         super::sampling::SamplingTarget::from_cells(self.to_string(), bins, cells, self.rejects())
     }
 }

@@ -254,7 +254,7 @@ pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<Check
 
 /// Significance of each statistical sub-test of `task`: [`TASK_ALPHA`] Šidák-split over its
 /// sampling and estimator checks.
-fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
+pub fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
     sidak(TASK_ALPHA, sampling + catalogue::estimators(task, t).len())
 }
 

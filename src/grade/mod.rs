@@ -9,6 +9,9 @@
 //! - [`image_check`]: per-pixel z-test of a render against the reference.
 //! - [`stability`]: extreme inputs must give finite values in range.
 //!
+//! [`power`] measures how large an error the statistical kinds catch, and
+//! [`calibration`] how often they fail correct code.
+//!
 //! # Data
 //! [`catalogue`] says which inputs each task is graded on; [`expected`] stores the
 //! reference's answers (insta snapshots embedded at build time), so the handout grades
@@ -32,6 +35,7 @@ pub mod image_check;
 pub mod isolation;
 pub mod lenient_f64;
 pub mod output;
+pub mod power;
 pub mod probe;
 pub mod renders;
 pub mod report;

@@ -88,6 +88,15 @@ impl Moments {
         self.m2 += d * (x - self.mean);
     }
 
+    /// The moments of the same values, each times `factor`.
+    pub fn scaled(&self, factor: f64) -> Moments {
+        Moments {
+            n: self.n,
+            mean: self.mean * factor,
+            m2: self.m2 * factor * factor,
+        }
+    }
+
     /// The unbiased sample variance (0 with fewer than two values).
     pub fn variance(&self) -> f64 {
         if self.n < 2 {

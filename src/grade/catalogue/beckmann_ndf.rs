@@ -3,9 +3,17 @@
 use super::random::{roughness, upper};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
+use crate::grade::power::Declared;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::Vec3;
+
+/// What the estimator and sampling checks of this task catch in at least 90 % of
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+pub const POWER: Declared = Declared {
+    estimator_bias: Some(0.05),
+    sampler_distortion: None,
+};
 
 const D: &str = "D = exp(−tan²θh / α²) / (π α² cos⁴θh)";
 

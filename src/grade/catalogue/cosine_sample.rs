@@ -4,9 +4,17 @@ use super::polygon::{hits_rectangle, projected_solid_angle};
 use super::random::upper;
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
+use crate::grade::power::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
 use glam::Vec3;
+
+/// What the estimator and sampling checks of this task catch in at least 90 % of
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+pub const POWER: Declared = Declared {
+    estimator_bias: Some(0.05),
+    sampler_distortion: Some(0.05),
+};
 
 const PDF: &str = "the density is cos θ / π above the surface and 0 below";
 

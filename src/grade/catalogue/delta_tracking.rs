@@ -3,10 +3,18 @@
 
 use super::EstimatorSpec;
 use crate::geometry::Ray;
+use crate::grade::power::Declared;
 use crate::medium::{Coefficients, FreeFlight, Medium};
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
 use glam::Vec3;
+
+/// What the estimator and sampling checks of this task catch in at least 90 % of
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+pub const POWER: Declared = Declared {
+    estimator_bias: Some(0.02),
+    sampler_distortion: None,
+};
 
 /// A medium of slabs stacked along z, with its own majorant (which may exceed σt, so
 /// tracking meets null collisions).

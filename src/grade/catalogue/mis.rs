@@ -8,6 +8,7 @@
 use super::EstimatorSpec;
 use super::polygon::projected_solid_angle;
 use crate::geometry::Ray;
+use crate::grade::power::Declared;
 use crate::integrator::Heuristic;
 use crate::sampling::Sampler;
 use crate::scene::{LoadOptions, Scene};
@@ -15,6 +16,13 @@ use crate::worksheet::Tasks;
 use glam::Vec3;
 use std::f64::consts::PI;
 use std::path::Path;
+
+/// What the estimator and sampling checks of this task catch in at least 90 % of
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+pub const POWER: Declared = Declared {
+    estimator_bias: Some(0.005),
+    sampler_distortion: None,
+};
 
 /// The errata's exact direct light without the occluder (scene A).
 pub const OPEN: f64 = 0.067_482_93;

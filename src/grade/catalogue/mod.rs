@@ -207,6 +207,21 @@ pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
     }
 }
 
+/// What `task`'s estimator and sampling checks are declared to catch (its catalogue file's
+/// `POWER`); `None` for a task without either.
+pub fn declared_power(task: TaskId) -> Option<super::power::Declared> {
+    match task {
+        TaskId::CosineSample => Some(cosine_sample::POWER),
+        TaskId::AnisoNdf => Some(aniso_ndf::POWER),
+        TaskId::BeckmannNdf => Some(beckmann_ndf::POWER),
+        TaskId::NdfSample => Some(ndf_sample::POWER),
+        TaskId::PathTrace => Some(path_trace::POWER),
+        TaskId::Mis => Some(mis::POWER),
+        TaskId::DeltaTracking => Some(delta_tracking::POWER),
+        _ => None,
+    }
+}
+
 /// Pairs of one estimator in two units of length, whose variances must agree (see the
 /// units check in [`super::checks`]).
 pub fn unit_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
