@@ -27,8 +27,7 @@ const WINDOW: usize = 4;
 fn solution_windows() -> Vec<String> {
     let shared = shipped_exercises();
     let mut windows = Vec::new();
-    for entry in std::fs::read_dir(root().join("solutions")).unwrap() {
-        let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+    for text in reference_sources() {
         let lines: Vec<&str> = code_lines(&text)
             .into_iter()
             .filter(|l| !l.starts_with("use ") && !l.starts_with("pub mod") && !shared.contains(l))
