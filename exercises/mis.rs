@@ -53,6 +53,12 @@
 //! 0, not `0/0`. If the BSDF is entirely delta (`bsdf.is_delta()`), the light sample can
 //! only contribute 0: skip it.
 //!
+//! # Edge cases
+//! - A point light lying exactly on the shading point (`d = 0`) lights nothing there (every
+//!   other point of the surface sees it at 90°): return 0 for it instead of dividing by
+//!   `d² = 0`. The graded estimators include such a light, and a NaN fails them.
+//! - Every density and probability in a [`LightSample`] is positive and finite.
+//!
 //! # What the worksheet gets wrong
 //! - Its geometry term is `cos θ / d²`: the cosine at the light is missing from the
 //!   area-to-solid-angle conversion (33 % too bright in the errata's test scene).

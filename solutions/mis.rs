@@ -97,7 +97,7 @@ fn light_sample(
             }
             let d = p - hit.p;
             let dist2 = d.length_squared();
-            if (dist2.is_nan() || dist2 <= 0.0) || (pdf_area.is_nan() || pdf_area <= 0.0) {
+            if dist2.is_nan() || dist2 <= 0.0 {
                 return Vec3::ZERO;
             }
             let wi = d / dist2.sqrt();
@@ -120,7 +120,9 @@ fn light_sample(
         LightSample::Point { p, intensity, prob } => {
             let d = p - hit.p;
             let dist2 = d.length_squared();
-            if (dist2.is_nan() || dist2 <= 0.0) || (prob.is_nan() || prob <= 0.0) {
+            // A point light on the shading point: every other point of the surface sees it
+            // at cos θ = 0, so it lights nothing here either.
+            if dist2.is_nan() || dist2 <= 0.0 {
                 return Vec3::ZERO;
             }
             let wi = d / dist2.sqrt();
@@ -135,7 +137,7 @@ fn light_sample(
             f * intensity / (dist2 * prob)
         }
         LightSample::Environment { wi, radiance, pdf } => {
-            if heuristic == Heuristic::Bsdf || (pdf.is_nan() || pdf <= 0.0) {
+            if heuristic == Heuristic::Bsdf {
                 return Vec3::ZERO;
             }
             let f = bsdf.eval(t, wo, wi);

@@ -105,9 +105,10 @@ fn every_wrong_implementation_fails_its_own_task_and_only_it() {
 }
 
 /// The integrator bugs that only show in one configuration (a light not parallel to the
-/// surface, a sky, a point light, bounce weights above 1, a survival probability other than
-/// 1/2, a path that escapes after a bounce) fail the estimator of that configuration, and
-/// the message names it.
+/// surface or brighter than 1, a sky, a point light off the origin or on the shading point,
+/// MIS weights that only the variance tells apart, bounce weights above 1, a survival
+/// probability other than 1/2, a path that escapes after a bounce) fail the estimator of
+/// that configuration, and the message names it.
 #[test]
 fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
     let inputs = inputs(1);
@@ -120,7 +121,7 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
         ("the roulette test inverted", "ρ = 0.8"),
         (
             "the light's pdf converted with the cosine at the shading point",
-            "an upright square light seen at grazing angles",
+            "an upright square light of radiance 3 seen at grazing angles",
         ),
         (
             "an environment sample without its MIS weight",
@@ -129,6 +130,23 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
         (
             "point-light samples dropped",
             "a square light and a point light",
+        ),
+        (
+            "weights p_a / (p_a − p_b): they sum to one, but are not the balance heuristic",
+            "variance of the balance heuristic within Veach's bound",
+        ),
+        ("the light sample's radiance left out", "radiance 3"),
+        (
+            "the point light's direction taken from the origin",
+            "a point light, off the origin",
+        ),
+        (
+            "a point light at distance 0 divides 0 by 0",
+            "a point light at the shading point",
+        ),
+        (
+            "an environment sample never tested for occlusion",
+            "a square light under a constant sky, light weights",
         ),
     ];
     let catalogue = wrong::catalogue();

@@ -13,6 +13,7 @@ use super::stability;
 use super::stats::sidak;
 use super::values;
 use super::values::ValueOutputs;
+use super::variance_pair::{self, VarianceOutputs, Variances};
 use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
 use crate::panics::{self, Panic};
 use crate::sampling::Sampler;
@@ -159,35 +160,12 @@ pub enum Raw {
     Samples(SampleOutputs),
     /// The estimates of an estimator check.
     Estimate(EstimateOutputs),
-    /// The variances of one estimator in two units of length.
+    /// The variances of the two estimators of a variance pair.
     Variances(VarianceOutputs),
     /// What the task returned on one stability case.
     Stability(StabilityOutput),
     /// A render of a graded scene.
     Image(ImageOutputs),
-}
-
-/// What one units-of-length pair measured in a worker: the variance per sample of the
-/// estimator in the original units and with lengths scaled, or why there is none.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct VarianceOutputs {
-    /// Which of the task's unit pairs, in order.
-    pub index: usize,
-    /// The two variances, a refused or non-finite estimate, or the panic that stopped it.
-    pub outcome: Result<Result<Variances, String>, Panic>,
-    /// Seconds the estimates took.
-    pub seconds: f64,
-}
-
-/// The variance per sample of one estimator in two units of length.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Variances {
-    /// In the scene's own units.
-    #[serde(with = "super::lenient_f64")]
-    pub original: f64,
-    /// With every length scaled.
-    #[serde(with = "super::lenient_f64")]
-    pub scaled: f64,
 }
 
 /// What the task returned on one stability case, or the panic that stopped it.
@@ -261,7 +239,7 @@ pub fn statistical_alpha(task: TaskId, sampling: usize, t: &impl Tasks) -> f64 {
 /// The grader's half: every check `task` has, each judged from the worker's raw output for
 /// it: value outputs against the expected outputs, sample counts against the reference
 /// density, estimates against the analytic values by the t-test, variance pairs against
-/// [`UNIT_VARIANCE_RATIO`], stability values against their cases. The list of checks is the
+/// their bounds, stability values against their cases. The list of checks is the
 /// grader's own (from `input` and the catalogues), so a check whose output never came back
 /// fails instead of dropping out of the score.
 pub fn judge_task(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<CheckResult> {
@@ -321,10 +299,15 @@ fn judge_all(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<(CheckResult, 
             _ => None,
         }));
     }
-    for (index, (_, scaled)) in catalogue::unit_pairs(task, t).iter().enumerate() {
-        let name = units_name(&scaled.name);
+    for (index, pair) in catalogue::variance_pairs(task, t).iter().enumerate() {
+        let name = pair.name();
         judged.push(from_raw(raw, &name, CheckKind::Estimator, |r| match r {
-            Raw::Variances(v) if v.index == index => Some(units_check(&name, v)),
+            Raw::Variances(v) if v.index == index => Some(variance_pair::judge(
+                &name,
+                pair.bound,
+                pair.first.analytic,
+                v,
+            )),
             _ => None,
         }));
     }
@@ -358,11 +341,6 @@ fn missing(name: &str, kind: CheckKind) -> CheckResult {
     ));
     result.finish();
     result
-}
-
-/// The name of the units-of-length check of the estimator `scaled`.
-fn units_name(scaled: &str) -> String {
-    format!("estimator: variance independent of units ({scaled})")
 }
 
 /// The worker's half: evaluates the value calls of `input` and runs the samplers,
@@ -437,19 +415,17 @@ pub fn run_task<T: Tasks>(
             }
         }));
     }
-    for (index, (mut original, mut scaled)) in
-        catalogue::unit_pairs(task, t).into_iter().enumerate()
-    {
-        raw.push(measure_raw(&units_name(&scaled.name), progress, || {
+    for (index, mut pair) in catalogue::variance_pairs(task, t).into_iter().enumerate() {
+        raw.push(measure_raw(&pair.name(), progress, || {
             let outcome = panics::catch(|| {
                 estimator::variances(
-                    original.samples,
+                    pair.first.samples,
                     (input.seed, 300 + index as u64),
-                    original.estimate.as_mut(),
-                    scaled.estimate.as_mut(),
-                    original.analytic,
+                    pair.first.estimate.as_mut(),
+                    pair.second.estimate.as_mut(),
+                    pair.first.analytic,
                 )
-                .map(|(original, scaled)| Variances { original, scaled })
+                .map(|(first, second)| Variances { first, second })
             });
             |seconds| {
                 Raw::Variances(VarianceOutputs {
@@ -592,39 +568,6 @@ fn estimator_check(
     }
     result.finish();
     result.seconds = estimate.seconds;
-    result
-}
-
-/// Largest accepted ratio between the variances of one estimator in two units of length.
-/// Sampling noise of the two variances stays within a few percent at the sample counts used;
-/// weights that mix measures change the variance many times over.
-pub const UNIT_VARIANCE_RATIO: f64 = 1.5;
-
-fn units_check(name: &str, variances: &VarianceOutputs) -> CheckResult {
-    let mut result = CheckResult::new(name, CheckKind::Estimator);
-    result.total = 1;
-    match &variances.outcome {
-        Ok(Ok(Variances { original, scaled })) => {
-            let ratio = scaled / original;
-            result.summary = format!(
-                "variance per sample {} in the original units, {} with lengths scaled (ratio {})",
-                super::output::fmt_num(*original),
-                super::output::fmt_num(*scaled),
-                super::output::fmt_num(ratio)
-            );
-            // Written so that a NaN ratio fails too.
-            if !(1.0 / UNIT_VARIANCE_RATIO..=UNIT_VARIANCE_RATIO).contains(&ratio) {
-                result.fail(format!(
-                    "{name}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
-                    super::output::fmt_num(ratio)
-                ));
-            }
-        }
-        Ok(Err(message)) => result.fail(message.clone()),
-        Err(p) => result.fail_panic(name, p),
-    }
-    result.finish();
-    result.seconds = variances.seconds;
     result
 }
 

@@ -49,5 +49,6 @@ pub mod student_build;
 pub mod test_brdf;
 pub mod tolerance;
 pub mod values;
+pub mod variance_pair;
 pub mod verdict;
 pub mod worker;

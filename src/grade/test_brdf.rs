@@ -34,6 +34,12 @@ pub enum TestBrdf {
     /// Lambert with albedo 1/2, but NaN where `cos θi cos θo < 0.05` (a formula that divides
     /// by zero near grazing): symmetric, yet no test can call it reciprocal or plausible.
     NanNearGrazing,
+    /// Lambert with albedo 1/2, but NaN where `cos θi > cos θo`: of every pair with distinct
+    /// cosines, exactly one order is NaN.
+    NanOneWayRound,
+    /// `2/π` where `cos θi > cos θo`, else `1/π`: every pair with distinct cosines has the
+    /// relative reciprocity gap exactly 1/2, however the pairs are drawn.
+    Lopsided,
 }
 
 impl TestBrdf {
@@ -49,6 +55,10 @@ impl TestBrdf {
             TestBrdf::ScaledIncidentOnly { scale } => scale * 0.5 * wi.z * FRAC_1_PI,
             TestBrdf::NanNearGrazing if wi.z * wo.z < 0.05 => f32::NAN,
             TestBrdf::NanNearGrazing => 0.5 * FRAC_1_PI,
+            TestBrdf::NanOneWayRound if wi.z > wo.z => f32::NAN,
+            TestBrdf::NanOneWayRound => 0.5 * FRAC_1_PI,
+            TestBrdf::Lopsided if wi.z > wo.z => 2.0 * FRAC_1_PI,
+            TestBrdf::Lopsided => FRAC_1_PI,
         }
     }
 
@@ -64,6 +74,8 @@ impl TestBrdf {
                 format!("{scale:e} cos θi / (2π) (depends on wi only, and tiny)")
             }
             TestBrdf::NanNearGrazing => "Lambert 1/2, NaN where cos θi cos θo < 0.05".into(),
+            TestBrdf::NanOneWayRound => "Lambert 1/2, NaN where cos θi > cos θo".into(),
+            TestBrdf::Lopsided => "2/π where cos θi > cos θo, else 1/π".into(),
         }
     }
 }
@@ -79,5 +91,10 @@ mod tests {
         assert!((f.eval(a, b) - f.eval(b, a)).abs() > 0.01);
         let g = TestBrdf::CosinePower { k: 0.5, n: 3 };
         assert_eq!(g.eval(a, b), g.eval(b, a));
+        let l = TestBrdf::Lopsided;
+        let (ab, ba) = (l.eval(a, b), l.eval(b, a));
+        assert_eq!((ab - ba).abs() / ab.max(ba), 0.5);
+        let n = TestBrdf::NanOneWayRound;
+        assert!(n.eval(b, a).is_nan() && n.eval(a, b).is_finite());
     }
 }

@@ -6,6 +6,10 @@ use glam::Vec3;
 /// division, bring an area density to solid angle at the shading point `x`:
 /// `pdf_ω = pdf_area · |p − x|² / cos θl`, with `cos θl = n · (x − p)/|x − p|` the cosine
 /// at the light. A point light is a delta distribution: it has no density to weight with.
+///
+/// Every density and probability here is positive and finite: a scene has at least one
+/// light when it returns a sample, and the loader refuses shapes without area and keeps every
+/// coordinate within [`crate::scene::MAX_REACH`], so no area is 0 or overflows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightSample {
     /// A point `p` on an area light.

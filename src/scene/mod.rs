@@ -29,7 +29,7 @@ mod values;
 
 pub use camera::Camera;
 pub use error::{Position, SceneError, SceneWarning};
-pub use load::{LoadOptions, MAX_PIXELS_PER_SIDE};
+pub use load::{LoadOptions, MAX_PIXELS_PER_SIDE, MAX_REACH};
 pub use medium::{MediumKind, SceneMedium};
 pub use needs::{Needs, with_dependencies};
 pub use settings::{RenderSettings, UNBOUNDED_DEPTH};

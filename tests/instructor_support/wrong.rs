@@ -245,6 +245,52 @@ fn closed_form() -> Vec<Variant> {
                 gap
             })
         }),
+        wrong(
+            "reciprocity gap that skips a pair NaN in one order only",
+            Phong,
+            |p| {
+                p.reciprocity_gap = Some(|brdf, sampler, pairs| {
+                    let mut gap = 0.0f32;
+                    for _ in 0..pairs {
+                        let a = uniform_hemisphere(sampler.next_2d());
+                        let b = uniform_hemisphere(sampler.next_2d());
+                        let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
+                        let pair = if f_ab.is_nan() && f_ba.is_nan() {
+                            f32::INFINITY
+                        } else if f_ab == f_ba {
+                            0.0
+                        } else {
+                            (f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs())
+                        };
+                        gap = gap.max(pair);
+                    }
+                    gap
+                })
+            },
+        ),
+        wrong(
+            "reciprocity gap relative to the smaller value",
+            Phong,
+            |p| {
+                p.reciprocity_gap = Some(|brdf, sampler, pairs| {
+                    let mut gap = 0.0f32;
+                    for _ in 0..pairs {
+                        let a = uniform_hemisphere(sampler.next_2d());
+                        let b = uniform_hemisphere(sampler.next_2d());
+                        let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
+                        let pair = if !(f_ab.is_finite() && f_ba.is_finite()) {
+                            f32::INFINITY
+                        } else if f_ab == f_ba {
+                            0.0
+                        } else {
+                            (f_ab - f_ba).abs() / f_ab.abs().min(f_ba.abs())
+                        };
+                        gap = gap.max(pair);
+                    }
+                    gap
+                })
+            },
+        ),
         wrong("absolute reciprocity gap", Phong, |p| {
             p.reciprocity_gap = Some(|brdf, sampler, pairs| {
                 let mut gap = 0.0f32;

@@ -114,10 +114,33 @@ enum MisFlaw {
     UnweightedSkySample,
     /// Point-light samples dropped.
     NoPointLights,
+    /// Weights `p_a / (p_a − p_b)` in place of `p_a / (p_a + p_b)`: the two still sum to one,
+    /// so every mean is right, but near `p_a = p_b` they explode.
+    DifferenceWeights,
+    /// The light sample's radiance left out (right only for lights of radiance 1).
+    LightRadianceIgnored,
+    /// The point light's direction taken as its position (right only when shading at the
+    /// origin).
+    PointLightFromOrigin,
+    /// No guard for a point light at distance 0: `0/0` where it lies on the shading point.
+    UnguardedPointLight,
+    /// An environment sample never tested for occlusion.
+    UnoccludedSky,
 }
 
 fn ratio(heuristic: Heuristic, from_light: bool, a: f32, b: f32) -> f32 {
     let r = |a: f32, b: f32| if a + b > 0.0 { a / (a + b) } else { 0.0 };
+    ratio_with(heuristic, from_light, a, b, r)
+}
+
+/// [`ratio`] with the balance ratio `r`.
+fn ratio_with(
+    heuristic: Heuristic,
+    from_light: bool,
+    a: f32,
+    b: f32,
+    r: impl Fn(f32, f32) -> f32,
+) -> f32 {
     match heuristic {
         Heuristic::Bsdf => (!from_light) as u8 as f32,
         Heuristic::Light => from_light as u8 as f32,
@@ -167,7 +190,7 @@ fn mis_variant(
         let w = if s.delta {
             1.0
         } else {
-            ratio(heuristic, false, s.pdf, pdf_light)
+            weight(heuristic, false, s.pdf, pdf_light, flaw)
         };
         radiance += s.weight * emitted * w;
     }
@@ -181,6 +204,15 @@ fn mis_variant(
                 emission_counted: true,
             },
         }),
+    }
+}
+
+/// The MIS weight of a sample, as `flaw` computes it.
+fn weight(heuristic: Heuristic, from_light: bool, a: f32, b: f32, flaw: MisFlaw) -> f32 {
+    if flaw == MisFlaw::DifferenceWeights {
+        ratio_with(heuristic, from_light, a, b, |a, b| a / (a - b))
+    } else {
+        ratio(heuristic, from_light, a, b)
     }
 }
 
@@ -206,8 +238,15 @@ fn light_sample(
             if flaw == MisFlaw::NoPointLights {
                 return Vec3::ZERO;
             }
-            let d = p - hit.p;
+            let d = if flaw == MisFlaw::PointLightFromOrigin {
+                p
+            } else {
+                p - hit.p
+            };
             let dist2 = d.length_squared();
+            if dist2 == 0.0 && flaw != MisFlaw::UnguardedPointLight {
+                return Vec3::ZERO;
+            }
             let (ray, t_max) = hit.spawn_to(p);
             if scene.occluded(&ray, t_max) {
                 return Vec3::ZERO;
@@ -218,13 +257,13 @@ fn light_sample(
             if heuristic == Heuristic::Bsdf || pdf <= 0.0 {
                 return Vec3::ZERO;
             }
-            if scene.occluded(&hit.spawn(wi), f32::INFINITY) {
+            if flaw != MisFlaw::UnoccludedSky && scene.occluded(&hit.spawn(wi), f32::INFINITY) {
                 return Vec3::ZERO;
             }
             let w = if flaw == MisFlaw::UnweightedSkySample {
                 1.0
             } else {
-                ratio(heuristic, true, pdf, bsdf.pdf(t, wo, wi))
+                weight(heuristic, true, pdf, bsdf.pdf(t, wo, wi), flaw)
             };
             return bsdf.eval(t, wo, wi) * radiance * (w / pdf);
         }
@@ -254,7 +293,12 @@ fn light_sample(
     } else {
         pdf_light
     };
-    f * le * (ratio(heuristic, true, pdf_in_weight, bsdf.pdf(t, wo, wi)) / pdf_light)
+    let le = if flaw == MisFlaw::LightRadianceIgnored {
+        Vec3::ONE
+    } else {
+        le
+    };
+    f * le * (weight(heuristic, true, pdf_in_weight, bsdf.pdf(t, wo, wi), flaw) / pdf_light)
 }
 
 /// How a `delta_tracking` variant goes wrong.
@@ -386,6 +430,43 @@ pub fn catalogue() -> Vec<Variant> {
             p.mis =
                 Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLights))
         }),
+        wrong(
+            "weights p_a / (p_a − p_b): they sum to one, but are not the balance heuristic",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::DifferenceWeights)
+                })
+            },
+        ),
+        wrong("the light sample's radiance left out", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::LightRadianceIgnored)
+            })
+        }),
+        wrong(
+            "the point light's direction taken from the origin",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::PointLightFromOrigin)
+                })
+            },
+        ),
+        wrong("a point light at distance 0 divides 0 by 0", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::UnguardedPointLight)
+            })
+        }),
+        wrong(
+            "an environment sample never tested for occlusion",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::UnoccludedSky)
+                })
+            },
+        ),
         wrong("the sheet's reused random numbers", DeltaTracking, |p| {
             p.delta_tracking = Some(|m, r, tm, n, s| {
                 tracking_variant(m, r, tm, n, s, TrackingFlaw::ReusedRandomNumbers)

@@ -1,14 +1,20 @@
 //! The estimators of `mis`: the errata's direct-light scene, where the answer is an exact
 //! integral, with and without an occluder, for every weighting; and the configurations the
 //! errata's scene never shows: a light seen at a grazing angle (the cosine at the light
-//! differs from the one at the shading point), a sky next to the square light (an
-//! environment sample needs its MIS weight too) and a point light (a light no BSDF sample
-//! can hit).
+//! differs from the one at the shading point) and brighter than 1, a sky next to the square
+//! light (an environment sample needs its MIS weight too, and the square hides part of it),
+//! and a point light (a light no BSDF sample can hit), once away from the shading point and
+//! once lying on it.
+//!
+//! Beside the means, two variance comparisons: the same estimator in two units of length,
+//! and the balance heuristic against light sampling alone (weights that sum to one but are
+//! not the balance heuristic's keep the mean and inflate the variance).
 
 use super::EstimatorSpec;
 use super::polygon::projected_solid_angle;
-use crate::geometry::Ray;
+use crate::geometry::{Hit, Ray};
 use crate::grade::power::Declared;
+use crate::grade::variance_pair::{VarianceBound, VariancePair};
 use crate::integrator::Heuristic;
 use crate::sampling::Sampler;
 use crate::scene::{LoadOptions, Scene};
@@ -35,6 +41,11 @@ const ALBEDO: f64 = 0.8;
 const SKY: f64 = 0.5;
 /// Position and intensity of the point light in [`Lighting::PointLight`].
 const POINT: ([f32; 3], f64) = ([-0.4, 0.2, 0.8], 0.5);
+/// Where [`Lighting::PointLight`] shades: away from the origin, so that `p − x` and `p + x`
+/// differ.
+const OFF_ORIGIN: Vec3 = Vec3::new(0.3, -0.25, 0.0);
+/// Radiance of the upright square of [`Lighting::Upright`] (the others emit 1).
+const UPRIGHT_RADIANCE: f64 = 3.0;
 
 /// The errata's square light: a one-sided unit square of radiance 1 at z = 1 facing down.
 const SQUARE: [Vec3; 4] = [
@@ -43,7 +54,7 @@ const SQUARE: [Vec3; 4] = [
     Vec3::new(1.5, 0.5, 1.0),
     Vec3::new(0.5, 0.5, 1.0),
 ];
-/// A unit square of radiance 1 standing upright at x = 1 and facing the origin: seen from
+/// A unit square of radiance [`UPRIGHT_RADIANCE`] standing upright at x = 1 and facing the origin: seen from
 /// the origin, its lower edge lies 3° above the horizon, and the cosine at the light
 /// (`1/r`) is far from the cosine at the shading point (`z/r`).
 const UPRIGHT: [Vec3; 4] = [
@@ -51,6 +62,16 @@ const UPRIGHT: [Vec3; 4] = [
     Vec3::new(1.0, 0.5, 0.05),
     Vec3::new(1.0, 0.5, 1.05),
     Vec3::new(1.0, -0.5, 1.05),
+];
+
+/// A 4 × 4 square of radiance 1 at z = 1 centred above the origin, facing down: over it the
+/// light's solid-angle density `1/(16 cos³θ)` crosses the BSDF's `cos θ/π` (at θ ≈ 48°),
+/// where weights that are not the balance heuristic's can explode.
+const WIDE: [Vec3; 4] = [
+    Vec3::new(-2.0, -2.0, 1.0),
+    Vec3::new(2.0, -2.0, 1.0),
+    Vec3::new(2.0, 2.0, 1.0),
+    Vec3::new(-2.0, 2.0, 1.0),
 ];
 
 /// What lights the floor.
@@ -62,11 +83,16 @@ enum Lighting {
     Occluded,
     /// The upright square instead of the errata's.
     Upright,
+    /// The wide square instead of the errata's.
+    Wide,
     /// The square light under a sky of constant radiance [`SKY`], which the square hides
     /// where it stands.
     Sky,
-    /// The square light and a point light.
+    /// The square light and a point light, shading at [`OFF_ORIGIN`].
     PointLight,
+    /// The square light and a point light lying on the floor at the shading point: at
+    /// distance 0 it lights nothing (every other point of the floor sees it at cos θ = 0).
+    PointOnShadingPoint,
 }
 
 impl Lighting {
@@ -75,26 +101,44 @@ impl Lighting {
         match self {
             Lighting::Open => "a square light, open",
             Lighting::Occluded => "a square light, occluded",
-            Lighting::Upright => "an upright square light seen at grazing angles",
+            Lighting::Upright => "an upright square light of radiance 3 seen at grazing angles",
+            Lighting::Wide => "a wide square light close above",
             Lighting::Sky => "a square light under a constant sky",
-            Lighting::PointLight => "a square light and a point light",
+            Lighting::PointLight => "a square light and a point light, off the origin",
+            Lighting::PointOnShadingPoint => {
+                "a square light and a point light at the shading point"
+            }
         }
     }
 
-    /// The exact direct light leaving the floor at the origin upwards: `ρ/π · E`, with the
-    /// irradiance `E` from Lambert's polygon formula (the errata's values for scenes A and B).
+    /// Where the estimate is made, on the floor (before scaling).
+    fn shading_point(self) -> Vec3 {
+        if self == Lighting::PointLight {
+            OFF_ORIGIN
+        } else {
+            Vec3::ZERO
+        }
+    }
+
+    /// The exact direct light leaving the floor at the shading point upwards: `ρ/π · E`,
+    /// with the irradiance `E` from Lambert's polygon formula (the errata's values for
+    /// scenes A and B).
     fn analytic(self) -> f64 {
-        let square = projected_solid_angle(&SQUARE);
+        let x = self.shading_point();
+        let square = projected_solid_angle(&SQUARE.map(|v| v - x));
         let irradiance = match self {
             Lighting::Open => return OPEN,
             Lighting::Occluded => return OCCLUDED,
-            Lighting::Upright => projected_solid_angle(&UPRIGHT),
+            Lighting::Upright => UPRIGHT_RADIANCE * projected_solid_angle(&UPRIGHT),
+            Lighting::Wide => projected_solid_angle(&WIDE),
             Lighting::Sky => square + SKY * (PI - square),
             Lighting::PointLight => {
                 let (p, intensity) = POINT;
-                let d2 = Vec3::from(p).length_squared() as f64;
-                square + intensity * p[2] as f64 / d2.sqrt() / d2
+                let d = Vec3::from(p) - x;
+                let d2 = d.length_squared() as f64;
+                square + intensity * d.z as f64 / d2.sqrt() / d2
             }
+            Lighting::PointOnShadingPoint => square,
         };
         ALBEDO / PI * irradiance
     }
@@ -124,12 +168,17 @@ shapes:
         a = s(-3.0),
         b = s(6.0),
     );
-    let light = if lighting == Lighting::Upright {
-        &UPRIGHT
-    } else {
-        &SQUARE
+    let light = match lighting {
+        Lighting::Upright => &UPRIGHT,
+        Lighting::Wide => &WIDE,
+        _ => &SQUARE,
     };
-    text += &quad(light, "emission: 1");
+    let radiance = if lighting == Lighting::Upright {
+        UPRIGHT_RADIANCE
+    } else {
+        1.0
+    };
+    text += &quad(light, &format!("emission: {radiance}"));
     match lighting {
         Lighting::Occluded => {
             text += &format!(
@@ -142,8 +191,12 @@ shapes:
             )
         }
         Lighting::Sky => text += &format!("lights:\n  - environment: {{radiance: {SKY}}}\n"),
-        Lighting::PointLight => {
-            let ([x, y, z], intensity) = POINT;
+        Lighting::PointLight | Lighting::PointOnShadingPoint => {
+            let ([x, y, z], intensity) = if lighting == Lighting::PointLight {
+                POINT
+            } else {
+                ([0.0; 3], POINT.1)
+            };
             // Intensity scales with area, so that the irradiance at the floor does not change.
             text += &format!(
                 "lights:\n  - point: {{position: [{}, {}, {}], intensity: {}}}\n",
@@ -153,7 +206,7 @@ shapes:
                 intensity * (scale as f64).powi(2)
             );
         }
-        Lighting::Open | Lighting::Upright => {}
+        Lighting::Open | Lighting::Upright | Lighting::Wide => {}
     }
     Scene::from_yaml(
         Path::new("<grader mis scene>"),
@@ -163,16 +216,26 @@ shapes:
     .expect("the grader's MIS scene is valid")
 }
 
-/// One call of `mis` at the origin, looking straight up; the mean of the three channels.
+/// The floor's hit at `point` (on the floor, before scaling), found by a ray straight down.
+fn shading_hit(scene: &Scene, point: Vec3) -> Hit {
+    let down = Ray::new(
+        (point + Vec3::new(0.0, 0.0, 0.3)) * scene_scale(scene),
+        -Vec3::Z,
+    );
+    scene
+        .intersect(&down)
+        .expect("the probe ray hits the floor at the shading point")
+}
+
+/// One call of `mis` at `point` on the floor, looking straight up; the mean of the three
+/// channels.
 fn direct_light<'a, T: Tasks>(
     t: &'a T,
     scene: Scene,
+    point: Vec3,
     heuristic: Heuristic,
 ) -> Box<super::super::estimator::Estimator<'a>> {
-    let down = Ray::new(Vec3::new(0.0, 0.0, 0.3) * scene_scale(&scene), -Vec3::Z);
-    let hit = scene
-        .intersect(&down)
-        .expect("the probe ray hits the floor at the origin");
+    let hit = shading_hit(&scene, point);
     Box::new(move |s: &mut Sampler| {
         let direct = t.mis(&scene, &hit, Vec3::Z, heuristic, s);
         Ok(direct.radiance.element_sum() as f64 / 3.0)
@@ -203,7 +266,12 @@ fn spec<T: Tasks>(
         .to_lowercase(),
         analytic: lighting.analytic(),
         samples: 100_000,
-        estimate: direct_light(t, scene(lighting, scale), heuristic),
+        estimate: direct_light(
+            t,
+            scene(lighting, scale),
+            lighting.shading_point(),
+            heuristic,
+        ),
     }
 }
 
@@ -218,17 +286,30 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         spec(t, Upright, 1.0, Heuristic::Light),
         spec(t, Upright, 1.0, Heuristic::Power),
         spec(t, Sky, 1.0, Heuristic::Power),
+        spec(t, Sky, 1.0, Heuristic::Light),
         spec(t, PointLight, 1.0, Heuristic::Power),
+        spec(t, PointOnShadingPoint, 1.0, Heuristic::Power),
     ]
 }
 
 /// The same estimator in the same scene in two units of length: its variance must not
-/// change (MIS weights that mix a pdf per unit area with one per solid angle do).
-pub fn unit_pairs<T: Tasks>(t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
-    vec![(
-        spec(t, Lighting::Open, 1.0, Heuristic::Balance),
-        spec(t, Lighting::Open, 1000.0, Heuristic::Balance),
-    )]
+/// change (MIS weights that mix a pdf per unit area with one per solid angle do). And the
+/// balance heuristic against light sampling alone under the wide light, within Veach's
+/// bound: weights that sum to one but are not the balance heuristic's (say
+/// `p_a / (p_a − p_b)`) keep every mean and inflate the variance where the densities cross.
+pub fn variance_pairs<T: Tasks>(t: &T) -> Vec<VariancePair<'_>> {
+    vec![
+        VariancePair {
+            first: spec(t, Lighting::Open, 1.0, Heuristic::Balance),
+            second: spec(t, Lighting::Open, 1000.0, Heuristic::Balance),
+            bound: VarianceBound::SameInAnyUnits,
+        },
+        VariancePair {
+            first: spec(t, Lighting::Wide, 1.0, Heuristic::Balance),
+            second: spec(t, Lighting::Wide, 1.0, Heuristic::Light),
+            bound: VarianceBound::BalanceBelowOther,
+        },
+    ]
 }
 
 #[cfg(test)]
@@ -238,11 +319,32 @@ mod tests {
     #[test]
     fn every_lighting_is_a_valid_scene_at_both_scales() {
         use Lighting::*;
-        for lighting in [Open, Occluded, Upright, Sky, PointLight] {
+        for lighting in [
+            Open,
+            Occluded,
+            Upright,
+            Sky,
+            PointLight,
+            PointOnShadingPoint,
+        ] {
             for scale in [1.0, 1000.0] {
                 let scene = scene(lighting, scale);
                 assert!((scene_scale(&scene) - scale).abs() < 1e-3 * scale);
+                let hit = shading_hit(&scene, lighting.shading_point());
+                assert!((hit.p - lighting.shading_point() * scale).length() < 1e-3 * scale);
             }
         }
+    }
+
+    #[test]
+    fn the_point_light_lies_exactly_on_its_shading_point() {
+        let scene = scene(Lighting::PointOnShadingPoint, 1.0);
+        let hit = shading_hit(&scene, Lighting::PointOnShadingPoint.shading_point());
+        let mut sampler = Sampler::new(0, 0);
+        let on_point = (0..64).any(|_| {
+            matches!(scene.sample_light(hit.p, &mut sampler),
+                Some(crate::light::LightSample::Point { p, .. }) if p == hit.p)
+        });
+        assert!(on_point, "the hit is at {}", hit.p);
     }
 }

@@ -26,6 +26,7 @@ mod smith_g1;
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
 use super::tolerance::Tolerance;
+use super::variance_pair::VariancePair;
 use crate::panics;
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
@@ -222,11 +223,11 @@ pub fn declared_power(task: TaskId) -> Option<super::power::Declared> {
     }
 }
 
-/// Pairs of one estimator in two units of length, whose variances must agree (see the
-/// units check in [`super::checks`]).
-pub fn unit_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<(EstimatorSpec<'_>, EstimatorSpec<'_>)> {
+/// Pairs of estimators of `task` whose variances must relate as each pair's bound says
+/// (see [`super::variance_pair`]).
+pub fn variance_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<VariancePair<'_>> {
     match task {
-        TaskId::Mis => mis::unit_pairs(t),
+        TaskId::Mis => mis::variance_pairs(t),
         _ => Vec::new(),
     }
 }

@@ -6,6 +6,7 @@ use crate::bsdf::PhongParams;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
 use crate::grade::test_brdf::TestBrdf;
+use crate::grade::tolerance::Tolerance;
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -96,6 +97,19 @@ pub fn fixed() -> Vec<CaseInput> {
             5,
         )
         .note("a NaN (or ∞) value must make the gap NaN or ∞: f32::max skips NaN"),
+        gap(
+            "a BRDF that is NaN in one order of a pair only cannot be called reciprocal",
+            TestBrdf::NanOneWayRound,
+            6,
+        )
+        .note("a pair where either f(a,b) or f(b,a) is NaN must make the gap NaN or ∞"),
+        gap(
+            "the gap of a BRDF twice as bright one way round is exactly 1/2",
+            TestBrdf::Lopsided,
+            7,
+        )
+        .rule(Rule::Close(Tolerance::F32))
+        .note(GAP),
     ]
 }
 
