@@ -46,7 +46,7 @@ fn assert_declared(row: &PowerRow, declared: Option<f64>) {
 }
 
 #[test]
-#[ignore = "slow: every estimator and sampler check of the reference at 200 seeds (about 3 minutes on two cores)"]
+#[ignore = "slow: every estimator and sampler check of the reference at 200 seeds (about 5 minutes on two cores)"]
 fn every_task_catches_the_error_it_declares() {
     for task in TaskId::ALL {
         let declared = declared_power(task);

@@ -16,7 +16,7 @@
 
 use super::catalogue;
 use super::checks::{SAMPLING_SAMPLES, statistical_alpha};
-use super::estimator::measure;
+use super::estimator::{Measured, judge, measure};
 use super::renders::{RENDER_CHECKS, STUDENT_SPP, load, render_stats, stored_reference};
 use super::sampling::{compare, draw};
 use crate::sampling::Sampler;
@@ -28,6 +28,9 @@ use serde::{Deserialize, Serialize};
 
 /// The relative sizes of the injected errors; the first, none, measures false failures.
 pub const LEVELS: [f64; 6] = [0.0, 0.005, 0.01, 0.02, 0.05, 0.10];
+
+/// Per entry of [`LEVELS`], whether one seed's checks caught the error of that size.
+type Caught = [bool; LEVELS.len()];
 
 /// The share of seeds at which an error counts as caught.
 pub const CAUGHT: f64 = 0.9;
@@ -80,7 +83,7 @@ pub struct PowerRow {
 }
 
 impl PowerRow {
-    fn new(subject: String, injection: Injection, checks: usize, failed: &[[bool; 6]]) -> Self {
+    fn new(subject: String, injection: Injection, checks: usize, failed: &[Caught]) -> Self {
         let failures = (0..LEVELS.len())
             .map(|level| failed.iter().filter(|f| f[level]).count())
             .collect();
@@ -127,10 +130,10 @@ pub fn estimator_power<T: Tasks + Sync>(task: TaskId, t: &T, seeds: usize) -> Op
         return None;
     }
     let alpha = statistical_alpha(task, catalogue::sampling_setups(task).len(), t);
-    let failed: Vec<[bool; 6]> = (0..seeds as u64)
+    let failed: Vec<Caught> = (0..seeds as u64)
         .into_par_iter()
         .map(|seed| {
-            let mut failed = [false; 6];
+            let mut failed = [false; LEVELS.len()];
             for (index, mut spec) in catalogue::estimators(task, t).into_iter().enumerate() {
                 let seed = (seed, 200 + index as u64);
                 let run = measure(
@@ -141,12 +144,12 @@ pub fn estimator_power<T: Tasks + Sync>(task: TaskId, t: &T, seeds: usize) -> Op
                     None,
                 );
                 for (level, e) in LEVELS.iter().enumerate() {
-                    failed[level] |= match &run {
-                        Ok(m) => {
-                            super::stats::t_test(&m.moments.scaled(1.0 + e), spec.analytic) < alpha
-                        }
-                        Err(_) => true,
-                    };
+                    let biased = run.clone().map(|m| Measured {
+                        moments: m.moments.scaled(1.0 + e),
+                        ..m
+                    });
+                    failed[level] |=
+                        judge(&spec.name, spec.analytic, spec.samples, alpha, biased).is_err();
                 }
             }
             failed
@@ -169,10 +172,10 @@ pub fn sampler_power<T: Tasks + Sync>(task: TaskId, t: &T, seeds: usize) -> Opti
     }
     let alpha = statistical_alpha(task, calls.len(), t);
     let targets: Vec<_> = calls.iter().map(|c| c.target(t)).collect();
-    let failed: Vec<[bool; 6]> = (0..seeds as u64)
+    let failed: Vec<Caught> = (0..seeds as u64)
         .into_par_iter()
         .map(|seed| {
-            let mut failed = [false; 6];
+            let mut failed = [false; LEVELS.len()];
             for (level, e) in LEVELS.iter().enumerate() {
                 let exponent = 1.0 + *e as f32;
                 for (index, (call, target)) in calls.iter().zip(&targets).enumerate() {
@@ -211,7 +214,7 @@ pub fn render_power<T: Tasks + Sync>(t: &T, seeds: usize) -> anyhow::Result<Vec<
         let mut failed = Vec::with_capacity(seeds);
         for seed in 0..seeds as u64 {
             let (fresh, _) = render_stats(&scene, t, STUDENT_SPP, seed);
-            let mut row = [false; 6];
+            let mut row = [false; LEVELS.len()];
             for (level, e) in LEVELS.iter().enumerate() {
                 let mut biased = fresh.clone();
                 let factor = 1.0 + *e as f32;
@@ -292,7 +295,7 @@ mod tests {
 
     #[test]
     fn the_smallest_error_caught_is_the_first_level_at_the_rate() {
-        let failed: Vec<[bool; 6]> = (0..10)
+        let failed: Vec<Caught> = (0..10)
             .map(|i| [false, false, i < 5, i < 9, true, true])
             .collect();
         let row = PowerRow::new("x".into(), Injection::EstimatorBias, 1, &failed);
