@@ -233,16 +233,13 @@ fn closed_form() -> Vec<Variant> {
         ),
         wrong("reciprocity gap whose f32::max skips NaN", Phong, |p| {
             p.reciprocity_gap = Some(|brdf, sampler, pairs| {
-                let mut gap = 0.0f32;
-                for _ in 0..pairs {
-                    let a = uniform_hemisphere(sampler.next_2d());
-                    let b = uniform_hemisphere(sampler.next_2d());
-                    let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
-                    if f_ab != f_ba {
-                        gap = gap.max((f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs()));
+                largest_pair_gap(brdf, sampler, pairs, |f_ab, f_ba| {
+                    if f_ab == f_ba {
+                        0.0
+                    } else {
+                        (f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs())
                     }
-                }
-                gap
+                })
             })
         }),
         wrong(
@@ -250,21 +247,15 @@ fn closed_form() -> Vec<Variant> {
             Phong,
             |p| {
                 p.reciprocity_gap = Some(|brdf, sampler, pairs| {
-                    let mut gap = 0.0f32;
-                    for _ in 0..pairs {
-                        let a = uniform_hemisphere(sampler.next_2d());
-                        let b = uniform_hemisphere(sampler.next_2d());
-                        let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
-                        let pair = if f_ab.is_nan() && f_ba.is_nan() {
+                    largest_pair_gap(brdf, sampler, pairs, |f_ab, f_ba| {
+                        if f_ab.is_nan() && f_ba.is_nan() {
                             f32::INFINITY
                         } else if f_ab == f_ba {
                             0.0
                         } else {
                             (f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs())
-                        };
-                        gap = gap.max(pair);
-                    }
-                    gap
+                        }
+                    })
                 })
             },
         ),
@@ -273,21 +264,15 @@ fn closed_form() -> Vec<Variant> {
             Phong,
             |p| {
                 p.reciprocity_gap = Some(|brdf, sampler, pairs| {
-                    let mut gap = 0.0f32;
-                    for _ in 0..pairs {
-                        let a = uniform_hemisphere(sampler.next_2d());
-                        let b = uniform_hemisphere(sampler.next_2d());
-                        let (f_ab, f_ba) = (brdf(a, b), brdf(b, a));
-                        let pair = if !(f_ab.is_finite() && f_ba.is_finite()) {
+                    largest_pair_gap(brdf, sampler, pairs, |f_ab, f_ba| {
+                        if !(f_ab.is_finite() && f_ba.is_finite()) {
                             f32::INFINITY
                         } else if f_ab == f_ba {
                             0.0
                         } else {
                             (f_ab - f_ba).abs() / f_ab.abs().min(f_ba.abs())
-                        };
-                        gap = gap.max(pair);
-                    }
-                    gap
+                        }
+                    })
                 })
             },
         ),
@@ -457,4 +442,19 @@ fn albedo_check(
         }
     }
     report
+}
+
+/// The largest `pair_gap(f(a,b), f(b,a))` over `pairs` pairs drawn as the exercise says, by
+/// `f32::max` (which skips NaN).
+fn largest_pair_gap(
+    brdf: &dyn Fn(Vec3, Vec3) -> f32,
+    sampler: &mut Sampler,
+    pairs: usize,
+    pair_gap: impl Fn(f32, f32) -> f32,
+) -> f32 {
+    (0..pairs).fold(0.0f32, |gap, _| {
+        let a = uniform_hemisphere(sampler.next_2d());
+        let b = uniform_hemisphere(sampler.next_2d());
+        gap.max(pair_gap(brdf(a, b), brdf(b, a)))
+    })
 }
