@@ -344,7 +344,7 @@ fn missing(name: &str, kind: CheckKind) -> CheckResult {
 }
 
 /// The worker's half: evaluates the value calls of `input` and runs the samplers,
-/// estimators, unit pairs and stability cases of `task` on `t`, returning their raw
+/// estimators, variance pairs and stability cases of `task` on `t`, returning their raw
 /// outputs only (the grader judges them), and telling `progress` before each step runs and
 /// when its output is ready.
 pub fn run_task<T: Tasks>(

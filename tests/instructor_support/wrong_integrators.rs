@@ -128,19 +128,14 @@ enum MisFlaw {
     UnoccludedSky,
 }
 
-fn ratio(heuristic: Heuristic, from_light: bool, a: f32, b: f32) -> f32 {
-    let r = |a: f32, b: f32| if a + b > 0.0 { a / (a + b) } else { 0.0 };
-    ratio_with(heuristic, from_light, a, b, r)
-}
-
-/// [`ratio`] with the balance ratio `r`.
-fn ratio_with(
-    heuristic: Heuristic,
-    from_light: bool,
-    a: f32,
-    b: f32,
-    r: impl Fn(f32, f32) -> f32,
-) -> f32 {
+/// The MIS weight of a sample drawn with density `a` when the other strategy has `b`, as
+/// `flaw` computes it.
+fn weight(heuristic: Heuristic, from_light: bool, a: f32, b: f32, flaw: MisFlaw) -> f32 {
+    let r = |a: f32, b: f32| match flaw {
+        MisFlaw::DifferenceWeights => a / (a - b),
+        _ if a + b > 0.0 => a / (a + b),
+        _ => 0.0,
+    };
     match heuristic {
         Heuristic::Bsdf => (!from_light) as u8 as f32,
         Heuristic::Light => from_light as u8 as f32,
@@ -204,15 +199,6 @@ fn mis_variant(
                 emission_counted: true,
             },
         }),
-    }
-}
-
-/// The MIS weight of a sample, as `flaw` computes it.
-fn weight(heuristic: Heuristic, from_light: bool, a: f32, b: f32, flaw: MisFlaw) -> f32 {
-    if flaw == MisFlaw::DifferenceWeights {
-        ratio_with(heuristic, from_light, a, b, |a, b| a / (a - b))
-    } else {
-        ratio(heuristic, from_light, a, b)
     }
 }
 

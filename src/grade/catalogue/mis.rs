@@ -54,9 +54,9 @@ const SQUARE: [Vec3; 4] = [
     Vec3::new(1.5, 0.5, 1.0),
     Vec3::new(0.5, 0.5, 1.0),
 ];
-/// A unit square of radiance [`UPRIGHT_RADIANCE`] standing upright at x = 1 and facing the origin: seen from
-/// the origin, its lower edge lies 3° above the horizon, and the cosine at the light
-/// (`1/r`) is far from the cosine at the shading point (`z/r`).
+/// A unit square of radiance [`UPRIGHT_RADIANCE`] standing upright at x = 1 and facing the
+/// origin: seen from the origin, its lower edge lies 3° above the horizon, and the cosine at
+/// the light (`1/r`) is far from the cosine at the shading point (`z/r`).
 const UPRIGHT: [Vec3; 4] = [
     Vec3::new(1.0, -0.5, 0.05),
     Vec3::new(1.0, 0.5, 0.05),
@@ -96,6 +96,18 @@ enum Lighting {
 }
 
 impl Lighting {
+    /// Every lighting, for the tests.
+    #[cfg(test)]
+    const ALL: [Lighting; 7] = [
+        Lighting::Open,
+        Lighting::Occluded,
+        Lighting::Upright,
+        Lighting::Wide,
+        Lighting::Sky,
+        Lighting::PointLight,
+        Lighting::PointOnShadingPoint,
+    ];
+
     /// What the check's name calls it.
     fn describe(self) -> &'static str {
         match self {
@@ -108,6 +120,24 @@ impl Lighting {
             Lighting::PointOnShadingPoint => {
                 "a square light and a point light at the shading point"
             }
+        }
+    }
+
+    /// The emitting square, and its radiance.
+    fn square(self) -> (&'static [Vec3; 4], f64) {
+        match self {
+            Lighting::Upright => (&UPRIGHT, UPRIGHT_RADIANCE),
+            Lighting::Wide => (&WIDE, 1.0),
+            _ => (&SQUARE, 1.0),
+        }
+    }
+
+    /// The point light's position and intensity, if there is one.
+    fn point_light(self) -> Option<([f32; 3], f64)> {
+        match self {
+            Lighting::PointLight => Some(POINT),
+            Lighting::PointOnShadingPoint => Some(([0.0; 3], POINT.1)),
+            _ => None,
         }
     }
 
@@ -124,23 +154,30 @@ impl Lighting {
     /// with the irradiance `E` from Lambert's polygon formula (the errata's values for
     /// scenes A and B).
     fn analytic(self) -> f64 {
-        let x = self.shading_point();
-        let square = projected_solid_angle(&SQUARE.map(|v| v - x));
-        let irradiance = match self {
+        match self {
             Lighting::Open => return OPEN,
             Lighting::Occluded => return OCCLUDED,
-            Lighting::Upright => UPRIGHT_RADIANCE * projected_solid_angle(&UPRIGHT),
-            Lighting::Wide => projected_solid_angle(&WIDE),
-            Lighting::Sky => square + SKY * (PI - square),
-            Lighting::PointLight => {
-                let (p, intensity) = POINT;
-                let d = Vec3::from(p) - x;
-                let d2 = d.length_squared() as f64;
-                square + intensity * d.z as f64 / d2.sqrt() / d2
-            }
-            Lighting::PointOnShadingPoint => square,
+            _ => {}
+        }
+        let x = self.shading_point();
+        let (light, radiance) = self.square();
+        let hidden = projected_solid_angle(&light.map(|v| v - x));
+        let sky = if self == Lighting::Sky {
+            SKY * (PI - hidden)
+        } else {
+            0.0
         };
-        ALBEDO / PI * irradiance
+        // A point light at distance 0 lights nothing (see `PointOnShadingPoint`).
+        let point = self.point_light().map_or(0.0, |(p, intensity)| {
+            let d = Vec3::from(p) - x;
+            let d2 = d.length_squared() as f64;
+            if d2 > 0.0 {
+                intensity * d.z as f64 / d2.sqrt() / d2
+            } else {
+                0.0
+            }
+        });
+        ALBEDO / PI * (radiance * hidden + sky + point)
     }
 }
 
@@ -168,16 +205,7 @@ shapes:
         a = s(-3.0),
         b = s(6.0),
     );
-    let light = match lighting {
-        Lighting::Upright => &UPRIGHT,
-        Lighting::Wide => &WIDE,
-        _ => &SQUARE,
-    };
-    let radiance = if lighting == Lighting::Upright {
-        UPRIGHT_RADIANCE
-    } else {
-        1.0
-    };
+    let (light, radiance) = lighting.square();
     text += &quad(light, &format!("emission: {radiance}"));
     match lighting {
         Lighting::Occluded => {
@@ -191,22 +219,17 @@ shapes:
             )
         }
         Lighting::Sky => text += &format!("lights:\n  - environment: {{radiance: {SKY}}}\n"),
-        Lighting::PointLight | Lighting::PointOnShadingPoint => {
-            let ([x, y, z], intensity) = if lighting == Lighting::PointLight {
-                POINT
-            } else {
-                ([0.0; 3], POINT.1)
-            };
-            // Intensity scales with area, so that the irradiance at the floor does not change.
-            text += &format!(
-                "lights:\n  - point: {{position: [{}, {}, {}], intensity: {}}}\n",
-                s(x),
-                s(y),
-                s(z),
-                intensity * (scale as f64).powi(2)
-            );
-        }
-        Lighting::Open | Lighting::Upright | Lighting::Wide => {}
+        _ => {}
+    }
+    if let Some(([x, y, z], intensity)) = lighting.point_light() {
+        // Intensity scales with area, so that the irradiance at the floor does not change.
+        text += &format!(
+            "lights:\n  - point: {{position: [{}, {}, {}], intensity: {}}}\n",
+            s(x),
+            s(y),
+            s(z),
+            intensity * (scale as f64).powi(2)
+        );
     }
     Scene::from_yaml(
         Path::new("<grader mis scene>"),
@@ -318,15 +341,7 @@ mod tests {
 
     #[test]
     fn every_lighting_is_a_valid_scene_at_both_scales() {
-        use Lighting::*;
-        for lighting in [
-            Open,
-            Occluded,
-            Upright,
-            Sky,
-            PointLight,
-            PointOnShadingPoint,
-        ] {
+        for lighting in Lighting::ALL {
             for scale in [1.0, 1000.0] {
                 let scene = scene(lighting, scale);
                 assert!((scene_scale(&scene) - scale).abs() < 1e-3 * scale);
