@@ -38,9 +38,11 @@
 //! `unsafe` loading, duplicated statics and a second copy of this crate in the library.
 //!
 //! The student's crate can name only what its `lib.rs` re-exports (the task API) and not
-//! the reference (not a dependency); its build script refuses `#[path]`, `include*!`,
-//! `env!`, `extern crate` and any `pbrlab*` crate name with file:line, and `lib.rs` forbids
-//! `unsafe`. At run time the student's code runs only in processes that entered
+//! the reference (not a dependency); its build script runs the check of
+//! `src/exercise-check/` on every task file, which refuses with file:line, and fails
+//! closed on, every construct that reaches outside the crate at compile time (`#[path]`,
+//! `mod x;`, `include*!`, `env!`, `extern crate`, `pbrlab*` crate names, and their
+//! assembly through macros), and `lib.rs` forbids `unsafe`. At run time the student's code runs only in processes that entered
 //! [`grade::sandbox`] first: the grader's workers (probes included) and `render`/`converge`
 //! of student code.
 //!

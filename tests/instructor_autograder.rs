@@ -41,7 +41,6 @@ fn clean(mut command: Command) -> Command {
         "CARGO_TARGET_DIR",
         "CARGO_BUILD_TARGET_DIR",
         "PBRLAB_EXERCISES",
-        "PBRLAB_STUBS",
     ] {
         command.env_remove(key);
     }
@@ -373,4 +372,91 @@ fn both_packages_grade_real_submissions_end_to_end() {
             "{name}: PrairieLearn {score} against Gradescope {gs_score}/{gs_total}"
         );
     }
+}
+
+/// The processes whose command line mentions `needle`.
+fn processes_mentioning(needle: &str) -> Vec<String> {
+    std::fs::read_dir("/proc")
+        .unwrap()
+        .flatten()
+        .filter_map(|e| std::fs::read(e.path().join("cmdline")).ok())
+        .map(|c| String::from_utf8_lossy(&c).replace('\0', " "))
+        .filter(|c| c.contains(needle) && !c.contains("cargo test"))
+        .collect()
+}
+
+#[test]
+#[ignore = "slow: a compile-time bomb runs into the build's CPU bound (about a minute)"]
+fn a_class_run_bounds_a_compile_time_bomb_and_retries_what_was_not_graded() {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    let bomb = submissions.join("bomb");
+    std::fs::create_dir_all(&bomb).unwrap();
+    // A constant evaluation that never ends, its lint lowered.
+    std::fs::write(
+        bomb.join("smith_g1.rs"),
+        "#![allow(long_running_const_eval)]\nuse crate::prelude::*;\n\
+         const fn spin() -> u64 { let mut i = 1u64; loop { i = i.wrapping_add(2); if i == 0 { return i; } } }\n\
+         const X: u64 = spin();\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = (w, alpha); X as f32 }\n",
+    )
+    .unwrap();
+    let honest = submissions.join("honest");
+    std::fs::create_dir_all(&honest).unwrap();
+    std::fs::copy(
+        repository().join("solutions/reflect.rs"),
+        honest.join("reflect.rs"),
+    )
+    .unwrap();
+    // An earlier run's infrastructure failure: not a grade, so graded again.
+    std::fs::create_dir_all(out.join("students")).unwrap();
+    std::fs::write(
+        out.join("students/honest.json"),
+        r#"{"student": "honest", "status": "not graded", "message": "the build did not finish"}"#,
+    )
+    .unwrap();
+    let run = || {
+        let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+            .arg("grade-class")
+            .arg(&submissions)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+        assert!(output.status.success(), "{stderr}");
+        stderr
+    };
+    let stderr = run();
+    assert!(
+        stderr.contains("0 graded already, 2 to grade (1 of them again"),
+        "{stderr}"
+    );
+    let honest = read_json(&out.join("students/honest.json"));
+    assert_eq!(honest["status"], "graded", "{honest}");
+    let reflect = honest["report"]["tasks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["task"] == "reflect")
+        .unwrap();
+    assert_eq!(reflect["points"], reflect["max_points"], "{reflect}");
+    let bomb = read_json(&out.join("students/bomb.json"));
+    assert_eq!(bomb["status"], "build error", "{bomb}");
+    assert!(
+        bomb["message"].as_str().unwrap().contains("CPU-time bound"),
+        "{bomb}"
+    );
+    assert!(
+        bomb["seconds"].as_f64().unwrap() < 150.0,
+        "the build was stopped by its bound: {bomb}"
+    );
+    assert_eq!(
+        processes_mentioning("pbrlab-class-"),
+        Vec::<String>::new(),
+        "no compiler outlives the class run"
+    );
+    // A build error is a grade: the next run keeps both.
+    let stderr = run();
+    assert!(stderr.contains("2 graded already, 0 to grade"), "{stderr}");
 }

@@ -159,6 +159,26 @@ fn load_code() {
     }
 }
 
+/// The grader's environment (under `cargo test`: PATH, HOME, every CARGO_ variable; in a
+/// package, its settings): none of it may reach the worker, which gets only what the
+/// launcher sets.
+fn read_environment() {
+    const SET_BY_THE_GRADER: [&str; 6] = [
+        "CI",
+        "RAYON_NUM_THREADS",
+        "MALLOC_ARENA_MAX",
+        "TMPDIR",
+        ATTACK,
+        CANARY,
+    ];
+    for (key, _) in std::env::vars_os() {
+        let key = key.to_string_lossy();
+        if !SET_BY_THE_GRADER.contains(&key.as_ref()) {
+            breach(format!("read the grader's environment variable {key}"));
+        }
+    }
+}
+
 /// Output that used to break the grader: invalid UTF-8, and one line of 200 MB.
 fn garble_output() {
     let mut out = std::io::stdout().lock();
@@ -203,6 +223,7 @@ fn worker_entry() {
         "spawn" => || ONCE.call_once(spawn_daemon),
         "sockets" => || ONCE.call_once(open_sockets),
         "output" => || ONCE.call_once(garble_output),
+        "environment" => || ONCE.call_once(read_environment),
         "load" => || ONCE.call_once(load_code),
         other => panic!("unknown attack {other}"),
     });
@@ -285,6 +306,11 @@ fn no_socket_can_be_opened() {
 #[test]
 fn no_library_or_generated_code_can_be_loaded() {
     attack_fails("load");
+}
+
+#[test]
+fn the_graders_environment_does_not_reach_the_worker() {
+    attack_fails("environment");
 }
 
 #[test]

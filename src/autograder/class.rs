@@ -10,7 +10,7 @@ use super::submission::{self, Intake};
 use crate::grade::credit::Credit;
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
 use crate::grade::runner::{GradeOptions, grade};
-use crate::grade::student_build::StudentBuild;
+use crate::grade::student_build::{BuildFailure, StudentBuild};
 use crate::grade::verdict::{GradeReport, TaskStatus};
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
@@ -21,12 +21,20 @@ use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+/// The status of a result that is not a grade: the grading machinery failed (the framework
+/// did not build, a crash of the grader). Such a result is graded again on the next run.
+pub const NOT_GRADED: &str = "not graded";
+
+/// The status of a submission whose build ran into its bounds (a compile-time bomb): a
+/// grade of 0, which a rerun keeps.
+pub const BUILD_ERROR: &str = "build error";
+
 /// The result of one student.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StudentResult {
     /// The student: the submission's folder or zip name.
     pub student: String,
-    /// `graded`, or `not graded` with the reason in `message`.
+    /// `graded`, [`BUILD_ERROR`] or [`NOT_GRADED`], with the reason in `message`.
     pub status: String,
     /// Why the submission was not graded, if it was not.
     pub message: String,
@@ -128,16 +136,29 @@ impl ClassRun<'_> {
         let all = submissions(self.submissions)?;
         std::fs::create_dir_all(self.out.join("students"))
             .with_context(|| format!("making {}", self.out.display()))?;
+        // A result that is not a grade (the grading machinery failed) is tried again.
+        let retried = all
+            .iter()
+            .filter(|(student, _)| self.saved_status(student).as_deref() == Some(NOT_GRADED))
+            .count();
         let todo: Vec<_> = all
             .iter()
-            .filter(|(student, _)| !self.result_file(student).exists())
+            .filter(|(student, _)| {
+                self.saved_status(student)
+                    .is_none_or(|status| status == NOT_GRADED)
+            })
             .cloned()
             .collect();
         eprintln!(
-            "{} submissions, {} graded already, {} to grade",
+            "{} submissions, {} graded already, {} to grade{}",
             all.len(),
             all.len() - todo.len(),
-            todo.len()
+            todo.len(),
+            if retried > 0 {
+                format!(" ({retried} of them again: not graded last time)")
+            } else {
+                String::new()
+            }
         );
         // The shipped stubs, read once from git.
         let mut stubs = BTreeMap::new();
@@ -150,6 +171,9 @@ impl ClassRun<'_> {
                 .cloned()
                 .context("no shipped stub for the task")
         };
+        if !todo.is_empty() {
+            self.build_framework(&stub)?;
+        }
         let bar = indicatif::ProgressBar::new(todo.len() as u64);
         if !self.progress {
             bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
@@ -203,6 +227,47 @@ impl ClassRun<'_> {
         Ok(per_submission)
     }
 
+    /// The status a saved result has, if there is one.
+    fn saved_status(&self, student: &str) -> Option<String> {
+        let text = std::fs::read_to_string(self.result_file(student)).ok()?;
+        let value: serde_json::Value = serde_json::from_str(&text).ok()?;
+        // A file that does not read as a result is not a grade either.
+        Some(value["status"].as_str().unwrap_or(NOT_GRADED).to_string())
+    }
+
+    /// Builds the framework and the worker once, from the shipped stubs, before any
+    /// student's build: no student's time or bounds pay for it, and the students' builds
+    /// compile only their own crate.
+    fn build_framework(
+        &self,
+        stub: &dyn Fn(TaskId) -> anyhow::Result<String>,
+    ) -> anyhow::Result<()> {
+        eprintln!("building the framework once before the first submission (no student's time)");
+        let scratch = tempfile::Builder::new()
+            .prefix("pbrlab-class-stubs-")
+            .tempdir()
+            .context("making a scratch folder")?;
+        let exercises = scratch.path().join("exercises");
+        std::fs::create_dir_all(&exercises)?;
+        for task in TaskId::ALL {
+            std::fs::write(exercises.join(format!("{}.rs", task.name())), stub(task)?)?;
+        }
+        StudentBuild {
+            root: self.root,
+            exercises: &exercises,
+            bins: &[WORKER_BINARY],
+            handout: !cfg!(feature = "solutions"),
+            stub,
+            echo: self.progress,
+            deadline: Duration::from_secs(3600),
+            offline: false,
+            bounded: false,
+        }
+        .run()
+        .context("building the framework before grading (no submission was graded)")?;
+        Ok(())
+    }
+
     /// Takes and builds one submission; a submission that cannot be built is a result.
     fn build(
         &self,
@@ -214,7 +279,7 @@ impl ClassRun<'_> {
         let not_graded = |message: String, intake: Option<&Intake>| {
             Box::new(StudentResult {
                 student: student.to_string(),
-                status: "not graded".into(),
+                status: NOT_GRADED.into(),
                 message,
                 taken: intake.map(taken).unwrap_or_default(),
                 ignored: intake.map(|i| i.ignored.clone()).unwrap_or_default(),
@@ -239,6 +304,7 @@ impl ClassRun<'_> {
                 echo: false,
                 deadline: Duration::from_secs(600),
                 offline: false,
+                bounded: true,
             }
             .run()
             .context("the submission did not build")?;
@@ -255,7 +321,14 @@ impl ClassRun<'_> {
                 compile_errors,
                 start,
             }),
-            Err(e) => Err(not_graded(format!("{e:#}"), Some(&intake))),
+            Err(e) => {
+                let mut result = not_graded(format!("{e:#}"), Some(&intake));
+                // A compile-time bomb is the submission's doing: a grade of 0, not a retry.
+                if e.chain().any(|c| c.is::<BuildFailure>()) {
+                    result.status = BUILD_ERROR.into();
+                }
+                Err(result)
+            }
         }
     }
 
@@ -267,7 +340,8 @@ impl ClassRun<'_> {
         };
         let options = GradeOptions {
             implementation: ImplChoice::Student,
-            hidden_seed: self.hidden_seed,
+            // Per submission, from the course's seed and the files: a leak serves no one else.
+            hidden_seed: self.hidden_seed.map(|seed| built.intake.hidden_seed(seed)),
             timeout: self.task_timeout,
             memory_limit: self.memory_limit,
             jobs: 1,
@@ -277,7 +351,7 @@ impl ClassRun<'_> {
         };
         let (status, message, report) = match grade(&options, &launcher) {
             Ok(report) => ("graded".to_string(), String::new(), Some(report)),
-            Err(e) => ("not graded".to_string(), format!("{e:#}"), None),
+            Err(e) => (NOT_GRADED.to_string(), format!("{e:#}"), None),
         };
         StudentResult {
             student: built.student,

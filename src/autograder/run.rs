@@ -96,6 +96,7 @@ impl Submission<'_> {
             echo: false,
             deadline: time,
             offline: true,
+            bounded: true,
         }
         .run()
         .context("the submission did not build")?;
@@ -107,7 +108,8 @@ impl Submission<'_> {
         let options = GradeOptions {
             implementation: ImplChoice::Student,
             seed: self.config.seed,
-            hidden_seed: Some(self.config.hidden_seed),
+            // Per submission: a leak of hidden inputs serves one submission only.
+            hidden_seed: Some(intake.hidden_seed(self.config.hidden_seed)),
             timeout: Duration::from_secs_f64(self.config.task_timeout.max(1.0)),
             memory_limit: self.config.memory_limit_mb << 20,
             jobs: self.config.jobs.max(1),

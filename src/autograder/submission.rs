@@ -41,6 +41,23 @@ impl Intake {
         s
     }
 
+    /// The hidden seed of this submission under the course's secret `secret`: a keyed hash
+    /// (SipHash-2-4) of the files taken. Hidden inputs that leak from one submission tell
+    /// nothing of another's, while a regrade of the same files draws the same cases.
+    pub fn hidden_seed(&self, secret: u64) -> u64 {
+        use std::hash::Hasher;
+        /// Separates this use of the secret from any other.
+        const DOMAIN: u64 = 0x7062_726c_6162_6873; // "pbrlabhs"
+        let mut hasher = siphasher::sip::SipHasher24::new_with_keys(secret, DOMAIN);
+        for (task, (_, text)) in &self.taken {
+            hasher.write(task.name().as_bytes());
+            hasher.write_u8(0xff);
+            hasher.write_usize(text.len());
+            hasher.write(text.as_bytes());
+        }
+        hasher.finish()
+    }
+
     /// Offers one entry, at `path` in the submission, of `size` bytes.
     fn offer(&mut self, path: &str, size: u64, read: impl FnOnce() -> std::io::Result<Vec<u8>>) {
         let name = path.rsplit('/').next().unwrap_or(path);
@@ -235,6 +252,31 @@ fn slash_path(path: &Path) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_hidden_seed_depends_on_the_secret_and_every_file() {
+        let intake = |text: &str| Intake {
+            taken: [
+                (
+                    TaskId::Reflect,
+                    ("reflect.rs".to_string(), text.to_string()),
+                ),
+                (
+                    TaskId::Mis,
+                    ("mis.rs".to_string(), "fn mis() {}".to_string()),
+                ),
+            ]
+            .into(),
+            ignored: Vec::new(),
+        };
+        let a = intake("fn reflect() {}");
+        assert_eq!(a.hidden_seed(7), intake("fn reflect() {}").hidden_seed(7));
+        assert_ne!(a.hidden_seed(7), a.hidden_seed(8), "another course secret");
+        assert_ne!(a.hidden_seed(7), intake("fn reflect() { }").hidden_seed(7));
+        let mut moved = a.clone();
+        moved.taken.remove(&TaskId::Mis);
+        assert_ne!(a.hidden_seed(7), moved.hidden_seed(7));
+    }
+
     use super::*;
     use std::io::Write;
 

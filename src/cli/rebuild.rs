@@ -71,6 +71,7 @@ pub fn ensure_current() -> anyhow::Result<()> {
         echo: true,
         deadline: BUILD_DEADLINE,
         offline: false,
+        bounded: false,
     }
     .run()
     .context("fix the error above and run the command again")?;

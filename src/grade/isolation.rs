@@ -60,16 +60,10 @@ impl Launcher {
     fn command(&self) -> Command {
         let mut cmd = Command::new(&self.program);
         cmd.args(&self.args);
-        // The student's code must not steer snapshot tooling or print backtraces into the
-        // report; CI mode makes any insta use in the child read-only.
-        for (key, _) in std::env::vars_os() {
-            if key.to_string_lossy().starts_with("INSTA_") {
-                cmd.env_remove(key);
-            }
-        }
-        cmd.env("CI", "true")
-            .env_remove("RUST_BACKTRACE")
-            .env_remove("RUST_LIB_BACKTRACE");
+        // Nothing of the grader's environment reaches student code (a package's settings,
+        // a CI token, snapshot tooling, backtrace switches): the worker starts with an empty
+        // environment plus what is set here. CI mode makes any insta use in it read-only.
+        cmd.env_clear().env("CI", "true");
         // Renders use a thread pool; on a many-core machine each thread's stack and malloc
         // arena would eat into the worker's address-space limit. A few threads suffice.
         cmd.env("RAYON_NUM_THREADS", WORKER_THREADS.to_string())
@@ -169,7 +163,7 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
 
 /// One line of a worker's stdout, as text (invalid UTF-8 replaced), at most
 /// [`LINE_LIMIT`] bytes of it; `None` at the end of the stream.
-fn read_line(reader: &mut impl BufRead) -> Option<String> {
+pub(crate) fn read_line(reader: &mut impl BufRead) -> Option<String> {
     let mut line = Vec::new();
     let mut any = false;
     loop {
@@ -306,7 +300,11 @@ fn run_in(
             timeout.as_secs_f64()
         ))),
         (Some(_), Some(Ok(record))) => Ok(record),
-        (Some(_), Some(Err(e))) => Err(WorkerFailure::Grader(format!("unreadable result: {e}"))),
+        // Only the worker and the student's code write to its stdout, and the worker writes
+        // its result whole: a result that does not parse was written over by student code.
+        (Some(_), Some(Err(e))) => Err(WorkerFailure::Student(format!(
+            "its result was garbled by the code's own writes to standard output ({e})"
+        ))),
         (Some(status), None) => Err(WorkerFailure::Student(explain(
             status,
             &errors,

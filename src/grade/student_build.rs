@@ -1,7 +1,8 @@
 //! Building the student's crate so that a compile error costs only its task: cargo builds
 //! the binaries, the compiler's JSON diagnostics (and the exercise build script's refusals)
-//! name the exercise files at fault, the shipped stub stands in for each of those, and the
-//! build runs again until it succeeds. The tasks built from their stubs are recorded beside
+//! name the exercise files at fault, and the build runs again from a copy of the exercise
+//! files in which the shipped stub has replaced each of those, until it succeeds. Only the
+//! copy is compiled then, so nothing refused stays reachable from the files that are. The tasks built from their stubs are recorded beside
 //! the binaries ([`BuildRecord`]); the grader reports each as a compile error with the
 //! compiler's message, and grades every other task as written.
 
@@ -9,7 +10,7 @@ use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use std::io::{BufRead, BufReader};
+use std::io::BufReader;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -75,9 +76,40 @@ pub struct StudentBuild<'a> {
     pub deadline: Duration,
     /// Build offline with the lock file as it is (an autograder: no network at grading).
     pub offline: bool,
+    /// Compile under [`BOUNDS`]: the framework is built already (a class run's first
+    /// build, an autograder's set-up), so what is left is the student's crate and a link,
+    /// and a compile-time bomb in it costs this build, never the grader.
+    pub bounded: bool,
 }
 
-/// Where the stand-in stubs of a build from `exercises` go: beside it, in `.pbrlab/`.
+/// The limits of a bounded build ([`StudentBuild::bounded`]), each compiler process's own.
+#[derive(Clone, Copy, Debug)]
+pub struct Bounds {
+    /// Address space, in bytes.
+    pub memory: u64,
+    /// CPU seconds.
+    pub cpu_seconds: u64,
+    /// Wall time of all rounds together.
+    pub wall: Duration,
+    /// The largest file written, in bytes.
+    pub file_size: u64,
+}
+
+/// What a bounded build may use: a student's crate compiles in seconds and links in well
+/// under a GiB, so a build that needs more is a compile-time bomb (a const-eval loop, a
+/// macro, type or static-data explosion).
+pub const BOUNDS: Bounds = Bounds {
+    memory: 2 << 30,
+    cpu_seconds: 60,
+    wall: Duration::from_secs(90),
+    file_size: 1 << 30,
+};
+
+/// The most compiler output kept from one build, in bytes (beyond [`MAX_MESSAGE`] per task).
+const MAX_OUTPUT: usize = 64 << 10;
+
+/// Where the copy of `exercises` with stubs in place of the failing files goes: beside it,
+/// in `.pbrlab/`.
 fn stub_folder(exercises: &Path) -> PathBuf {
     exercises
         .parent()
@@ -103,11 +135,16 @@ impl StudentBuild<'_> {
     /// exercise files, or when the deadline passes.
     pub fn run(&self) -> anyhow::Result<BuildRecord> {
         let start = Instant::now();
+        let deadline = if self.bounded {
+            self.deadline.min(BOUNDS.wall)
+        } else {
+            self.deadline
+        };
         let stubs = stub_folder(self.exercises);
         let mut errors: BTreeMap<TaskId, String> = BTreeMap::new();
         loop {
             self.place_stubs(&stubs, &errors)?;
-            let left = self.deadline.saturating_sub(start.elapsed());
+            let left = deadline.saturating_sub(start.elapsed());
             let round = self.cargo(&stubs, !errors.is_empty(), left)?;
             if round.success {
                 let worker = round
@@ -152,7 +189,8 @@ impl StudentBuild<'_> {
         }
     }
 
-    /// Makes `folder` hold exactly the stubs of the tasks in `errors`.
+    /// Makes `folder` a copy of the exercise files with the shipped stub in place of each
+    /// task in `errors` (no folder when there are none).
     fn place_stubs(&self, folder: &Path, errors: &BTreeMap<TaskId, String>) -> anyhow::Result<()> {
         if folder.exists() {
             std::fs::remove_dir_all(folder)
@@ -162,10 +200,21 @@ impl StudentBuild<'_> {
             return Ok(());
         }
         std::fs::create_dir_all(folder).with_context(|| format!("making {}", folder.display()))?;
-        for &task in errors.keys() {
-            let text = (self.stub)(task)?;
-            let file = folder.join(format!("{}.rs", task.name()));
-            std::fs::write(&file, text).with_context(|| format!("writing {}", file.display()))?;
+        for task in TaskId::ALL {
+            let name = format!("{}.rs", task.name());
+            let file = folder.join(&name);
+            if errors.contains_key(&task) {
+                let text = (self.stub)(task)?;
+                std::fs::write(&file, text)
+                    .with_context(|| format!("writing {}", file.display()))?;
+            } else {
+                let source = self.exercises.join(&name);
+                // A missing file stays missing: the build script refuses it by name.
+                if source.is_file() {
+                    std::fs::copy(&source, &file)
+                        .with_context(|| format!("copying {}", source.display()))?;
+                }
+            }
         }
         Ok(())
     }
@@ -189,21 +238,36 @@ impl StudentBuild<'_> {
         if self.handout && self.root.join("solutions").is_dir() {
             cargo.arg("--no-default-features");
         }
-        if self.offline {
+        if self.offline || self.bounded {
             cargo.args(["--offline", "--locked"]);
         }
-        // Unset, the build script compiles exercises/ as it is: plain cargo builds and this
-        // one then agree, and neither rebuilds after the other.
-        let own = self.root.join("exercises");
-        if same_folder(self.exercises, &own) {
+        // Its own process group, so that the whole tree (rustc, the linker) is killed
+        // with it and nothing outlives the build.
+        {
+            use std::os::unix::process::CommandExt;
+            cargo.process_group(0);
+            if self.bounded {
+                // SAFETY: between fork and exec the closure only makes setrlimit calls,
+                // which are async-signal-safe and allocate nothing.
+                unsafe {
+                    cargo.pre_exec(|| {
+                        use rlimit::Resource;
+                        Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
+                        Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
+                        Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
+                        Resource::CORE.set(0, 0)?;
+                        Ok(())
+                    });
+                }
+            }
+        }
+        // The one folder the build script compiles. Unset, it compiles exercises/ as it is:
+        // plain cargo builds and this one then agree, and neither rebuilds after the other.
+        let compiled = if stubbed { stubs } else { self.exercises };
+        if same_folder(compiled, &self.root.join("exercises")) {
             cargo.env_remove("PBRLAB_EXERCISES");
         } else {
-            cargo.env("PBRLAB_EXERCISES", self.exercises);
-        }
-        if stubbed {
-            cargo.env("PBRLAB_STUBS", stubs);
-        } else {
-            cargo.env_remove("PBRLAB_STUBS");
+            cargo.env("PBRLAB_EXERCISES", compiled);
         }
         let mut child = cargo
             .spawn()
@@ -212,17 +276,22 @@ impl StudentBuild<'_> {
         let echo = self.echo;
         let side = std::thread::spawn(move || {
             let mut lines = Vec::new();
-            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
+            let mut kept = 0;
+            let mut reader = BufReader::new(stderr);
+            while let Some(line) = super::isolation::read_line(&mut reader) {
                 if echo {
                     eprintln!("{line}");
                 }
-                lines.push(line);
+                if kept + line.len() <= MAX_OUTPUT {
+                    kept += line.len();
+                    lines.push(line);
+                }
             }
             lines
         });
         let stdout = child.stdout.take().context("cargo's stdout")?;
         let (tx, rx) = std::sync::mpsc::channel();
-        let exercises = self.exercises.to_path_buf();
+        let exercises = compiled.to_path_buf();
         std::thread::spawn(move || {
             let mut round = Round {
                 success: false,
@@ -230,25 +299,45 @@ impl StudentBuild<'_> {
                 errors: Vec::new(),
                 worker: None,
             };
-            for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+            let mut reader = BufReader::new(stdout);
+            while let Some(line) = super::isolation::read_line(&mut reader) {
                 read_message(&line, &exercises, echo, &mut round);
             }
             let _ = tx.send(round);
         });
+        let group = child.id();
         let mut round = match rx.recv_timeout(left) {
             Ok(round) => round,
             Err(_) => {
-                let _ = child.kill();
+                kill_group(group);
                 let _ = child.wait();
-                bail!(
-                    "the build did not finish within {} s",
-                    self.deadline.as_secs()
-                );
+                return Err(BuildFailure::TimedOut(left).into());
             }
         };
         let status = child.wait().context("waiting for cargo")?;
+        kill_group(group);
+
         round.success = round.success && status.success();
-        for line in side.join().unwrap_or_default() {
+        let lines = side.join().unwrap_or_default();
+        // A compiler stopped by a bound: cargo names the signal that stopped it (SIGXCPU,
+        // 24, for CPU time, SIGKILL after it) or the allocation that failed. (A constant
+        // too large for the memory bound is a compile error of its file, charged to its
+        // task like any other.)
+        let over_limit = |l: &String| {
+            ["(signal: ", "memory allocation of", "File size limit"]
+                .iter()
+                .any(|sign| l.contains(sign))
+        };
+        if self.bounded && !status.success() && lines.iter().any(over_limit) {
+            // What stopped it, without the compiler's command line.
+            let shown: Vec<_> = lines
+                .iter()
+                .filter(|l| over_limit(l))
+                .map(|l| l.find("(signal: ").map_or(l.trim(), |at| &l[at..]))
+                .collect();
+            return Err(BuildFailure::OverLimit(shown.join("\n")).into());
+        }
+        for line in lines {
             // The exercise build script's refusals: `exercises/<task>.rs:line:col: …`.
             if let Some(task) = refused_task(&line) {
                 add_message(round.blamed.entry(task).or_default(), &line);
@@ -258,6 +347,34 @@ impl StudentBuild<'_> {
             }
         }
         Ok(round)
+    }
+}
+
+/// Why a build of the student's code ended without binaries, when the student's code is the
+/// cause: a compile-time bomb that ran into the build's time or resource bounds.
+#[derive(Debug, thiserror::Error)]
+pub enum BuildFailure {
+    /// The build ran past its wall deadline.
+    #[error(
+        "the build did not finish within {} s (a loop in a `const` evaluation, or a macro or \
+         type that grows without end?)",
+        .0.as_secs()
+    )]
+    TimedOut(Duration),
+    /// A compiler process ran into its memory or CPU-time bound.
+    #[error(
+        "the compiler ran out of its memory or CPU-time bound on this code (a huge constant, a \
+         macro or type explosion?):\n{0}"
+    )]
+    OverLimit(String),
+}
+
+/// Kills the process group `group` (the build's cargo and everything it started).
+fn kill_group(group: u32) {
+    if let Ok(pid) = i32::try_from(group)
+        && let Some(pid) = rustix::process::Pid::from_raw(pid)
+    {
+        let _ = rustix::process::kill_process_group(pid, rustix::process::Signal::KILL);
     }
 }
 
