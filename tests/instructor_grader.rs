@@ -8,6 +8,7 @@ mod instructor_support;
 mod shipped_stubs;
 
 use instructor_support::{different, grade, graded_tasks, inputs, messages, wrong};
+use pbrlab::grade::checks::WorkerInput;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
 use pbrlab::implementation::ImplChoice;
@@ -280,7 +281,21 @@ fn a_worker_receives_every_call_and_sampler_but_no_expected_value_or_density() {
     use pbrlab::grade::catalogue::{evaluate, hidden_inputs};
     for (task, mut input) in inputs(1) {
         input.hidden = evaluate(&hidden_inputs(task, 77), &Reference).unwrap();
-        let worker = input.for_worker();
+        let workers = input.for_workers();
+        assert_eq!(workers.len(), 1 + usize::from(!input.hidden.is_empty()));
+        assert!(!workers[0].values_only, "{task}");
+        if let [_, hidden] = workers.as_slice() {
+            assert!(hidden.values_only && hidden.sampling.is_empty(), "{task}");
+            assert_eq!(
+                hidden.values.len(),
+                1,
+                "{task}: the hidden worker's one check"
+            );
+        }
+        let worker = WorkerInput {
+            values: workers.iter().flat_map(|w| w.values.clone()).collect(),
+            ..workers[0].clone()
+        };
         let calls: usize = worker.values.iter().map(|v| v.calls.len()).sum();
         let cases = input.data.as_ref().map_or(0, |d| d.values.len()) + input.hidden.len();
         assert_eq!(calls, cases, "{task}: every case's call goes to the worker");
@@ -300,6 +315,15 @@ fn a_worker_receives_every_call_and_sampler_but_no_expected_value_or_density() {
                     .flat_map(|v| &v.calls)
                     .any(|c| *c == case.call),
                 "{task}: hidden case {} missing",
+                case.name
+            );
+            assert!(
+                !workers[0]
+                    .values
+                    .iter()
+                    .flat_map(|v| &v.calls)
+                    .any(|c| *c == case.call),
+                "{task}: hidden case {} reached the visible checks' worker",
                 case.name
             );
         }

@@ -25,6 +25,7 @@ use std::time::Duration;
 const ATTACK: &str = "PBRLAB_TEST_ATTACK";
 const CANARY: &str = "PBRLAB_TEST_CANARY";
 const BREACH: &str = "SANDBOX BREACH";
+const LEAK: &str = "LEAKED INPUT";
 
 fn breach(what: impl std::fmt::Display) {
     println!("{BREACH}: {what}");
@@ -215,6 +216,17 @@ fn worker_entry() {
     if name == "forge" {
         forge_with_the_nonce();
     }
+    if name == "leak" {
+        // Prints every input it is given and panics on the last case it sees, its input
+        // in the message: all of it must stay out of what the student sees of hidden cases.
+        let mut patch = Patch::new(TaskId::SmithG1);
+        patch.smith_g1 = Some(|w, alpha| {
+            println!("{LEAK} {}", alpha.to_bits());
+            assert!(alpha.to_bits() % 2 == 0, "{LEAK} {}", alpha.to_bits());
+            pbrlab_solutions::smith_g1::smith_g1(w, alpha)
+        });
+        pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
+    }
     static ONCE: Once = Once::new();
     let mut patch = Patch::new(TaskId::SmithG1);
     patch.misbehave = Some(match name.as_str() {
@@ -224,6 +236,8 @@ fn worker_entry() {
         "sockets" => || ONCE.call_once(open_sockets),
         "output" => || ONCE.call_once(garble_output),
         "environment" => || ONCE.call_once(read_environment),
+        "threads" => || ONCE.call_once(flood_threads),
+        "disk" => || ONCE.call_once(flood_disk),
         "load" => || ONCE.call_once(load_code),
         other => panic!("unknown attack {other}"),
     });
@@ -275,12 +289,51 @@ fn attack_fails(attack: &str) -> GradeReport {
         std::fs::read_to_string(&canary).expect("canary still there"),
         "genuine"
     );
+    let limits = if own_user() {
+        // Workers run as a user of their own, so the thread limit binds them.
+        "limits in force".to_string()
+    } else {
+        format!(
+            "limits partly: {}",
+            pbrlab::grade::isolation::NO_THREAD_LIMIT
+        )
+    };
     assert_eq!(
         report.sandbox,
-        ["landlock in force; seccomp in force; limits in force"],
+        [format!("landlock in force; seccomp in force; {limits}")],
         "{attack}"
     );
     report
+}
+
+/// True when the workers (this test binary) run as a user of their own.
+fn own_user() -> bool {
+    std::env::current_exe().is_ok_and(|exe| pbrlab::grade::isolation::runs_as_own_user(&exe))
+}
+
+/// Starts as many threads as it can (3,000 took 0.4 s before workers had a user of their
+/// own: the kernel's thread limit does not bind root).
+fn flood_threads() {
+    let mut started = Vec::new();
+    for _ in 0..1000 {
+        match std::thread::Builder::new()
+            .stack_size(64 << 10)
+            .spawn(|| std::thread::sleep(Duration::from_millis(300)))
+        {
+            Ok(handle) => started.push(handle),
+            Err(_) => break,
+        }
+    }
+    let count = started.len();
+    for handle in started {
+        let _ = handle.join();
+    }
+    // The limit is in force when the grader gave the worker a user of its own.
+    use std::os::unix::fs::MetadataExt;
+    let own_user = std::fs::metadata("/proc/self").is_ok_and(|m| m.uid() >= 0x5000_0000);
+    if count == 1000 && own_user {
+        breach(format!("started {count} threads"));
+    }
 }
 
 #[test]
@@ -306,6 +359,107 @@ fn no_socket_can_be_opened() {
 #[test]
 fn no_library_or_generated_code_can_be_loaded() {
     attack_fails("load");
+}
+
+#[test]
+fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
+    use pbrlab::grade::call::Call;
+    use pbrlab::grade::catalogue::hidden_inputs;
+    instructor_support::install();
+    let seed = 4242;
+    let launcher = Launcher {
+        program: std::env::current_exe().expect("test binary path"),
+        args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
+            .map(String::from)
+            .to_vec(),
+        env: vec![(ATTACK.into(), "leak".into())],
+    };
+    let options = GradeOptions {
+        tasks: vec![TaskId::SmithG1],
+        implementation: ImplChoice::Student,
+        timeout: Duration::from_secs(20),
+        renders: false,
+        hidden_seed: Some(seed),
+        ..GradeOptions::default()
+    };
+    let report = grade(&options, &launcher).expect("grading runs");
+    let g1 = report.task("smith_g1").expect("graded");
+    assert!(
+        g1.output.contains(LEAK),
+        "what the visible checks' worker printed is shown: {}",
+        g1.output
+    );
+    // What a student sees: the text report (hidden checks by count), the task's output and
+    // status, and the visible tests of the Gradescope results.
+    let gradescope = serde_json::to_value(pbrlab::grade::report::gradescope(&report)).unwrap();
+    let shown: Vec<String> = gradescope["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|t| t["visibility"] == "visible")
+        .map(|t| t.to_string())
+        .collect();
+    let visible = format!(
+        "{}\n{}\n{:?}\n{}",
+        pbrlab::grade::report::text(&report),
+        g1.output,
+        g1.status,
+        shown.join("\n")
+    );
+    let hidden: Vec<String> = hidden_inputs(TaskId::SmithG1, seed)
+        .iter()
+        .filter_map(|case| match case.call {
+            Call::SmithG1 { alpha, .. } => Some(format!("{LEAK} {}", alpha.to_bits())),
+            _ => None,
+        })
+        .collect();
+    assert!(!hidden.is_empty());
+    for line in &hidden {
+        assert!(
+            !visible.contains(line.as_str()),
+            "{line} reached the report"
+        );
+    }
+}
+
+/// Fills the worker's temporary folder (its working directory) with 2 GiB, in files each
+/// under the kernel's file-size limit.
+fn flood_disk() {
+    let chunk = vec![7u8; 1 << 20];
+    for file in 0..20 {
+        let Ok(mut out) = std::fs::File::create(format!("flood-{file}")) else {
+            return;
+        };
+        for _ in 0..100 {
+            if out.write_all(&chunk).is_err() {
+                return;
+            }
+        }
+    }
+    breach("wrote 2 GiB into the temporary folder");
+}
+
+#[test]
+fn a_disk_flood_costs_its_own_task_only() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let report = grade_under("disk", &dir.path().join("canary"));
+    for t in &report.tasks {
+        if t.task == "smith_g1" {
+            assert!(
+                matches!(&t.status, TaskStatus::Crashed { reason } if reason.contains("temporary folder")),
+                "{:?}",
+                t.status
+            );
+        } else {
+            assert_eq!(t.status, TaskStatus::Passed, "{}: {:?}", t.task, t.status);
+        }
+        assert!(!t.output.contains(BREACH), "{}", t.output);
+    }
+}
+
+#[test]
+fn a_thread_flood_stops_at_the_workers_limit() {
+    attack_fails("threads");
 }
 
 #[test]

@@ -291,6 +291,7 @@ impl ClassRun<'_> {
         let prepared = (|| -> anyhow::Result<(tempfile::TempDir, BTreeMap<TaskId, String>)> {
             let scratch = tempfile::Builder::new()
                 .prefix("pbrlab-class-")
+                .permissions(std::os::unix::fs::PermissionsExt::from_mode(0o711))
                 .tempdir()
                 .context("making a scratch folder")?;
             let exercises = scratch.path().join("exercises");
@@ -308,7 +309,9 @@ impl ClassRun<'_> {
             }
             .run()
             .context("the submission did not build")?;
-            // The next build overwrites the worker in the target folder: this one's copy.
+            // The next build overwrites the worker in the target folder: this one's copy. Its
+            // folder lets others through (not list it), so that a worker run as a user of its
+            // own can start it.
             std::fs::copy(&record.worker, scratch.path().join(WORKER_BINARY))
                 .context("copying the worker")?;
             Ok((scratch, record.errors()))

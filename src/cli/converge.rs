@@ -161,6 +161,9 @@ fn sandbox(args: &Args) -> anyhow::Result<()> {
     let protections = enter(&Policy {
         memory_limit: 0,
         cpu_seconds: 0,
+        // Its own process, as its user: a per-user thread limit would count the user's
+        // every process.
+        threads: 0,
         readable,
         writable: vec![args.out.clone()],
     });

@@ -144,6 +144,9 @@ fn sandbox_render(output: &Path, stats: Option<&Path>) -> Result<Protections> {
     Ok(sandbox::enter(&Policy {
         memory_limit: 0,
         cpu_seconds: 0,
+        // Its own process, as its user: a per-user thread limit would count the user's
+        // every process.
+        threads: 0,
         readable: Vec::new(),
         writable,
     }))

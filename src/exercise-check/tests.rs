@@ -66,8 +66,13 @@ mod tests {
 #[test]
 fn every_shipped_exercise_and_reference_file_is_accepted() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    // The student handout has no solutions/.
+    let folders: Vec<_> = ["exercises", "solutions"]
+        .into_iter()
+        .filter(|f| root.join(f).is_dir())
+        .collect();
     let mut seen = 0;
-    for folder in ["exercises", "solutions"] {
+    for folder in &folders {
         for entry in std::fs::read_dir(root.join(folder)).unwrap().flatten() {
             let path = entry.path();
             let name = path.file_name().unwrap().to_string_lossy().into_owned();
@@ -79,7 +84,7 @@ fn every_shipped_exercise_and_reference_file_is_accepted() {
             }
         }
     }
-    assert!(seen >= 30, "only {seen} files found");
+    assert!(seen >= 15 * folders.len(), "only {seen} files found");
 }
 
 /// Each refused construct, and the line its finding must name.

@@ -53,10 +53,13 @@ pub struct TaskInput {
 }
 
 impl TaskInput {
-    /// What a worker gets of this input: the value cases' calls without their expected
-    /// outputs (those stay with the grader, hidden ones included), the sampler setups and
-    /// the seed.
-    pub fn for_worker(&self) -> WorkerInput {
+    /// What the workers get of this input, one process each, none of it expected values
+    /// (those stay with the grader): first the visible checks (the stored value cases'
+    /// calls, the sampler setups and the seed; estimator and stability checks run there
+    /// too), then, when there are hidden cases, their calls alone in a worker of their own.
+    /// So no process that saw a hidden input prints, crashes or returns anything a student
+    /// sees outside the hidden checks.
+    pub fn for_workers(&self) -> Vec<WorkerInput> {
         let calls = |cases: &[ValueCase]| cases.iter().map(|c| c.call.clone()).collect();
         let data = self.data.clone().unwrap_or_default();
         let mut values = Vec::new();
@@ -64,12 +67,6 @@ impl TaskInput {
             values.push(ValueCalls {
                 check: VALUES.into(),
                 calls: calls(&data.values),
-            });
-        }
-        if !self.hidden.is_empty() {
-            values.push(ValueCalls {
-                check: HIDDEN_VALUES.into(),
-                calls: calls(&self.hidden),
             });
         }
         let sampling = data
@@ -81,11 +78,24 @@ impl TaskInput {
                 may_reject: case.target.rejected > 0.0,
             })
             .collect();
-        WorkerInput {
+        let mut inputs = vec![WorkerInput {
             values,
             sampling,
             seed: self.seed,
+            values_only: false,
+        }];
+        if !self.hidden.is_empty() {
+            inputs.push(WorkerInput {
+                values: vec![ValueCalls {
+                    check: HIDDEN_VALUES.into(),
+                    calls: calls(&self.hidden),
+                }],
+                sampling: Vec::new(),
+                seed: self.seed,
+                values_only: true,
+            });
         }
+        inputs
     }
 
     /// The value cases of the check named `check`, with their visibility.
@@ -136,6 +146,9 @@ pub struct WorkerInput {
     pub sampling: Vec<SamplingSetup>,
     /// Seed of the statistical checks.
     pub seed: u64,
+    /// Run the value calls and nothing else (the worker of the hidden cases).
+    #[serde(default)]
+    pub values_only: bool,
 }
 
 /// What one sampling check's sampler produced in a worker: its binned directions, the
@@ -226,7 +239,11 @@ pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
 
 /// Runs every check of `task` on `t` in this process: [`run_task`] then [`judge_task`].
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
-    let raw = run_task(t, task, &input.for_worker(), &mut |_| {});
+    let raw: Vec<Raw> = input
+        .for_workers()
+        .iter()
+        .flat_map(|worker| run_task(t, task, worker, &mut |_| {}))
+        .collect();
     judge_task(task, input, &raw)
 }
 
@@ -359,6 +376,9 @@ pub fn run_task<T: Tasks>(
         let outputs = Raw::Values(values::evaluate(&calls.check, &calls.calls, t));
         progress(Progress::Raw(&outputs));
         raw.push(outputs);
+    }
+    if input.values_only {
+        return raw;
     }
     for (index, setup) in input.sampling.iter().enumerate() {
         let name = format!("sampling: {}", setup.call);

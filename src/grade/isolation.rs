@@ -138,6 +138,51 @@ fn cpu_seconds(timeout: Duration) -> u64 {
     (timeout.as_secs_f64() * WORKER_THREADS as f64).ceil() as u64 + 5
 }
 
+/// The most threads a worker's user may run (its own user: see [`worker_user`]).
+pub const WORKER_MAX_THREADS: u64 = 64;
+
+/// What the report says of the limits when a worker kept the grader's user.
+pub const NO_THREAD_LIMIT: &str = "no thread limit (the worker kept the grader's user: the \
+                                   kernel counts that limit per user, and does not apply it \
+                                   to root)";
+
+/// True when `path` can be reached by any user: every folder above it lets others through.
+fn reachable_by_others(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    path.ancestors().skip(1).all(|dir| {
+        dir.as_os_str().is_empty()
+            || std::fs::metadata(dir).is_ok_and(|m| m.permissions().mode() & 0o001 != 0)
+    })
+}
+
+/// True when workers started from `program` run as a user of their own: the grader is
+/// root, and another user can start `program` and read the scenes.
+pub fn runs_as_own_user(program: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    let scenes = crate::repository_root().join("scenes");
+    let mode = |p: &Path| std::fs::metadata(p).map_or(0, |m| m.permissions().mode());
+    rustix::process::geteuid().is_root()
+        && reachable_by_others(program)
+        && mode(program) & 0o001 != 0
+        && reachable_by_others(&scenes)
+        && mode(&scenes) & 0o005 == 0o005
+}
+
+/// The user and group a worker runs as when the grader is root: a fresh id of its own, so
+/// that the kernel's thread limit (counted per user, and never applied to root) binds it
+/// and only it, and so that it owns nothing but `scratch`, which is handed to it. `None`
+/// when the grader is not root (the worker keeps the grader's user) or when another user
+/// could not start `program` or read the scenes.
+fn worker_user(program: &Path, scratch: &Path) -> Option<u32> {
+    if !runs_as_own_user(program) {
+        return None;
+    }
+    // Above every id a system hands out to people and services.
+    let id = 0x5000_0000 | (crate::entropy::random_u64() as u32 & 0x00ff_ffff);
+    std::os::unix::fs::chown(scratch, Some(id), Some(id)).ok()?;
+    Some(id)
+}
+
 /// Runs `job` in a new worker, killing it after `timeout`.
 pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
     let start = Instant::now();
@@ -149,16 +194,22 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             )));
         }
     };
+    let user = worker_user(&launcher.program, scratch.path());
     let delivery = Delivery {
         sandbox: Policy {
             memory_limit: job.memory_limit,
             cpu_seconds: cpu_seconds(timeout),
             readable: vec![crate::repository_root().join("scenes")],
             writable: vec![scratch.path().to_path_buf()],
+            threads: if user.is_some() {
+                WORKER_MAX_THREADS
+            } else {
+                0
+            },
         },
         job: job.clone(),
     };
-    run_in(launcher, &delivery, scratch.path(), timeout, start)
+    run_in(launcher, &delivery, scratch.path(), user, timeout, start)
 }
 
 /// One line of a worker's stdout, as text (invalid UTF-8 replaced), at most
@@ -195,12 +246,18 @@ fn run_in(
     launcher: &Launcher,
     delivery: &Delivery,
     scratch: &Path,
+    user: Option<u32>,
     timeout: Duration,
     start: Instant,
 ) -> WorkerRun {
     let job = &delivery.job;
-    let spawned = launcher
-        .command()
+    let mut command = launcher.command();
+    if let Some(id) = user {
+        use std::os::unix::process::CommandExt;
+        // No supplementary groups either: std clears them when it changes the user.
+        command.uid(id).gid(id);
+    }
+    let spawned = command
         .current_dir(scratch)
         .env("TMPDIR", scratch)
         .stdin(Stdio::piped())
@@ -261,7 +318,7 @@ fn run_in(
         });
         rx
     });
-    let status = wait(&mut child, timeout);
+    let (status, flooded) = wait(&mut child, timeout, scratch);
     // The deadline holds for the pipes too: whatever still holds them open (a process
     // that inherited them) is not waited for.
     let pipe_deadline = Instant::now() + PIPE_GRACE;
@@ -272,13 +329,19 @@ fn run_in(
         printed,
         step,
         finished_raw,
-        protections,
+        mut protections,
     } = stdout
         .and_then(|rx| rx.recv_timeout(left()).ok())
         .unwrap_or_default();
     let errors = stderr
         .and_then(|rx| rx.recv_timeout(left()).ok())
         .unwrap_or_default();
+    if user.is_none()
+        && let Some(protections) = &mut protections
+        && protections.limits == "in force"
+    {
+        protections.limits = format!("partly: {NO_THREAD_LIMIT}");
+    }
     let seconds = start.elapsed().as_secs_f64();
     let mut output = printed;
     if !errors.trim().is_empty() {
@@ -294,6 +357,11 @@ fn run_in(
                 .find(|l| !l.trim().is_empty())
                 .unwrap_or("no message")
                 .trim()
+        ))),
+        (None, _) if flooded => Err(WorkerFailure::Student(format!(
+            "wrote more than {} MiB or {MAX_SCRATCH_FILES} files into its temporary folder and \
+             was stopped",
+            MAX_SCRATCH_BYTES >> 20
         ))),
         (None, _) => Err(WorkerFailure::Student(format!(
             "timed out after {} s and was stopped (an infinite loop?)",
@@ -342,17 +410,58 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     i
 }
 
-/// Waits for the child; kills it and returns `None` after `timeout`.
-fn wait(child: &mut Child, timeout: Duration) -> Option<ExitStatus> {
+/// The most a worker may write into its temporary folder, in bytes and in files.
+pub const MAX_SCRATCH_BYTES: u64 = 512 << 20;
+/// See [`MAX_SCRATCH_BYTES`].
+pub const MAX_SCRATCH_FILES: usize = 10_000;
+
+/// How often the temporary folder's size is measured.
+const DISK_WATCH: Duration = Duration::from_millis(100);
+
+/// True when `folder` holds more than [`MAX_SCRATCH_BYTES`] or [`MAX_SCRATCH_FILES`]
+/// (counting stops there, so a flood of files costs the watch no more than that).
+fn over_disk(folder: &Path) -> bool {
+    let (mut bytes, mut files) = (0u64, 0usize);
+    let mut todo = vec![folder.to_path_buf()];
+    while let Some(dir) = todo.pop() {
+        for entry in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+            files += 1;
+            if files > MAX_SCRATCH_FILES {
+                return true;
+            }
+            match entry.metadata() {
+                Ok(m) if m.is_dir() => todo.push(entry.path()),
+                Ok(m) => bytes += m.len(),
+                Err(_) => {}
+            }
+            if bytes > MAX_SCRATCH_BYTES {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Waits for the child; kills it and returns `None` after `timeout`, or as soon as its
+/// temporary folder `scratch` outgrows its bound (then with `true`). The kernel bounds
+/// each file a worker writes (`RLIMIT_FSIZE`); their sum is watched from here.
+fn wait(child: &mut Child, timeout: Duration, scratch: &Path) -> (Option<ExitStatus>, bool) {
     let deadline = Instant::now() + timeout;
+    let mut next_watch = Instant::now() + DISK_WATCH;
     loop {
+        let flooded = Instant::now() >= next_watch && {
+            next_watch = Instant::now() + DISK_WATCH;
+            over_disk(scratch)
+        };
         match child.try_wait() {
-            Ok(Some(status)) => return Some(status),
-            Ok(None) if Instant::now() < deadline => std::thread::sleep(Duration::from_millis(5)),
+            Ok(Some(status)) => return (Some(status), false),
+            Ok(None) if Instant::now() < deadline && !flooded => {
+                std::thread::sleep(Duration::from_millis(5))
+            }
             _ => {
                 let _ = child.kill();
                 let _ = child.wait();
-                return None;
+                return (None, flooded);
             }
         }
     }

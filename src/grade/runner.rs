@@ -248,27 +248,35 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
             outcomes.push((task.name().to_string(), no_checks(task)));
             continue;
         }
-        jobs.push(Job {
-            nonce: isolation::nonce(),
-            implementation: spec_for(task, options, &attempted)?,
-            kind: JobKind::Grade {
-                task: task.name().into(),
-                input: input.for_worker(),
-            },
-            memory_limit: options.memory_limit,
-        });
-        // The expected outputs stay here; the worker gets the calls only.
-        graded.push((task, input));
+        // The expected outputs stay here; the workers get the calls only, the hidden
+        // cases' in a worker of their own.
+        let workers = input.for_workers();
+        graded.push((task, input, workers.len()));
+        for worker in workers {
+            jobs.push(Job {
+                nonce: isolation::nonce(),
+                implementation: spec_for(task, options, &attempted)?,
+                kind: JobKind::Grade {
+                    task: task.name().into(),
+                    input: worker,
+                },
+                memory_limit: options.memory_limit,
+            });
+        }
     }
     let mut sandbox = std::collections::BTreeSet::new();
-    for ((task, input), run) in graded.iter().zip(run_all(launcher, jobs, options)) {
+    let mut runs = run_all(launcher, jobs, options).into_iter();
+    for (task, input, workers) in &graded {
+        let Some(mut run) = runs.next() else { break };
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
-        let mut outcome = outcome(*task, input, run, options.credit);
-        if options.hidden_seed.is_some() && !outcome.output.is_empty() {
-            // What the code printed could carry the hidden inputs out.
-            outcome.output = HIDDEN_OUTPUT.into();
+        for hidden in runs.by_ref().take(workers - 1) {
+            sandbox.extend(hidden.protections.as_ref().map(ToString::to_string));
+            join_hidden(&mut run, hidden);
         }
-        outcomes.push((task.name().to_string(), outcome));
+        outcomes.push((
+            task.name().to_string(),
+            outcome(*task, input, run, options.credit),
+        ));
     }
     outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
     let mut tasks: Vec<TaskOutcome> = outcomes.into_iter().map(|(_, o)| o).collect();
@@ -426,9 +434,19 @@ fn has_code_checks(task: TaskId) -> bool {
         || !crate::stability::cases_for::<crate::worksheet::TaskFns>(task).is_empty()
 }
 
-/// What a task's report shows instead of the code's output when hidden cases were graded.
-pub const HIDDEN_OUTPUT: &str =
-    "(the code's output is not shown: hidden cases were graded in the same run)\n";
+/// Adds the raw outputs of the hidden cases' worker to the visible worker's `run`. Nothing
+/// else of it reaches the report: not what it printed, not how it crashed or timed out (a
+/// hidden check without outputs fails, and says only how many cases it had).
+fn join_hidden(run: &mut isolation::WorkerRun, hidden: isolation::WorkerRun) {
+    let raw = match hidden.outcome {
+        Ok(Record::Outputs { raw }) => raw,
+        _ => hidden.finished_raw,
+    };
+    match &mut run.outcome {
+        Ok(Record::Outputs { raw: visible }) => visible.extend(raw),
+        _ => run.finished_raw.extend(raw),
+    }
+}
 
 /// A task's outcome from its worker run: every check of the task, judged from the
 /// worker's raw outputs against `input`'s expected data.

@@ -13,7 +13,9 @@
 //!   loaded; the binary's own libraries are loaded before the filter). Threads still work
 //!   (`clone3` answers `ENOSYS`, so the C library falls back to `clone`, which is checked).
 //! - **Resource limits** (through `rlimit`): address space, CPU seconds, size of a written
-//!   file, open files, and no core dumps.
+//!   file, open files, and no core dumps; and threads, when the grader runs as root and so
+//!   starts each worker as a user of its own (`RLIMIT_NPROC` is counted per user and does
+//!   not bind root).
 //!
 //! What could not be put in force is reported, not fatal: [`Protections`] says what was,
 //! and the grade report prints it.
@@ -33,6 +35,11 @@ pub struct Policy {
     /// Folders the worker may read and write: its private temporary directory (and, for a
     /// render of the student's code, the folder the image goes to).
     pub writable: Vec<PathBuf>,
+    /// The most threads (processes) the worker's user may have (0: no limit). Set only
+    /// when the worker runs as a user of its own ([`crate::grade::isolation`] drops root
+    /// to one): the kernel counts this limit per user, and does not apply it to root.
+    #[serde(default)]
+    pub threads: u64,
 }
 
 /// The largest file a worker may write, in bytes.
@@ -117,6 +124,11 @@ fn limit_resources(policy: &Policy) -> anyhow::Result<Option<String>> {
         .set(MAX_OPEN_FILES, MAX_OPEN_FILES)
         .context("open files")?;
     Resource::CORE.set(0, 0).context("core dumps")?;
+    if policy.threads > 0 {
+        Resource::NPROC
+            .set(policy.threads, policy.threads)
+            .context("threads")?;
+    }
     Ok(None)
 }
 
