@@ -14,9 +14,14 @@ pub mod prelude {
 
 /// The framework helpers a task may use, under the paths the exercise texts give
 /// (`crate::bsdf::projected_alpha`, `crate::optics::schlick_weight`, …).
-pub use pbrlab::{
-    bsdf, geometry, integrator, light, math, medium, optics, sampling, scene, worksheet,
-};
+pub use pbrlab::{bsdf, geometry, light, math, medium, optics, sampling, scene, worksheet};
+
+/// The integrator types the tasks exchange. Not the framework's integrators themselves:
+/// its volumetric path tracer would compute `path_trace`'s answer for a student who
+/// forwarded to it.
+pub mod integrator {
+    pub use pbrlab::integrator::{Bounce, DirectLight, Heuristic, Segment};
+}
 
 /// The crate's task modules under the name they had when `exercises/` was a module of the
 /// framework (`crate::exercises::reflect::reflect`).

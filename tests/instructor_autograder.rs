@@ -194,7 +194,33 @@ fn submissions(results: &Path) -> Vec<(&'static str, Vec<(String, String)>)> {
         "exercises/kajiya_kay.rs".into(),
         solution(TaskId::KajiyaKay).replacen("pub fn ", "pub fn (", 1),
     ));
-    let mut hostile = every(&[TaskId::Reflect, TaskId::FresnelSchlick]);
+    // Correct code with the names a path tracer uses: nothing to refuse.
+    let mut correct = every(&[TaskId::Reflect]);
+    correct.push((
+        "exercises/reflect.rs".into(),
+        solution(TaskId::Reflect)
+            + "\n#[allow(dead_code)]\nfn weight(path: f32, env: f32, include: f32, asm: f32) -> f32 {\n    \
+               let mut total = path;\n    total += env + include + asm;\n    total\n}\n",
+    ));
+    let mut hostile = every(&[
+        TaskId::Reflect,
+        TaskId::FresnelSchlick,
+        TaskId::SmithG1,
+        TaskId::CosineSample,
+    ]);
+    // A first line the compiler skips and the check cannot read as Rust: refused.
+    hostile.push((
+        "smith_g1.rs".into(),
+        format!(
+            "#!r\"\nconst _STOLEN: &str = include_str!(\"../solutions/smith_g1.rs\");\n\"\n{}",
+            solution(TaskId::SmithG1)
+        ),
+    ));
+    // Another file compiled as a module of this one: refused (task files are leaves).
+    hostile.push((
+        "cosine_sample.rs".into(),
+        solution(TaskId::CosineSample) + "\nmod smith_g1;\n",
+    ));
     // Forges the results file from inside the sandbox (the path is this test's), and
     // prints a forged verdict.
     let forged = format!(
@@ -214,7 +240,7 @@ fn submissions(results: &Path) -> Vec<(&'static str, Vec<(String, String)>)> {
             + "\nconst _STOLEN: &str = include_str!(\"../solutions/fresnel_schlick.rs\");\n",
     ));
     vec![
-        ("correct", every(&[])),
+        ("correct", correct),
         ("stub", Vec::new()),
         ("non_compiling", broken),
         ("hostile", hostile),
@@ -324,9 +350,19 @@ fn both_packages_grade_real_submissions_end_to_end() {
                 );
             }
             "hostile" => {
+                // What the code printed is shown as its output (the visible checks' worker
+                // saw no hidden input), and is only that: no score, no file, came of it.
+                let mut scored = results.clone();
+                for test in scored["tests"].as_array_mut().unwrap() {
+                    test["output"] = Value::Null;
+                }
                 assert!(
-                    !text.contains("987654"),
+                    !scored.to_string().contains("987654"),
                     "the forged results did not land: {text}"
+                );
+                assert!(
+                    text.contains("PBRLAB-RESULT"),
+                    "the output is shown: {text}"
                 );
                 assert_eq!(gradescope_points(&results, TaskId::Reflect).0, 0.0);
                 assert_eq!(gradescope_points(&results, TaskId::FresnelSchlick).0, 0.0);
@@ -334,6 +370,13 @@ fn both_packages_grade_real_submissions_end_to_end() {
                     text.contains("include_str"),
                     "the refusal is reported: {text}"
                 );
+                for (task, refusal) in [
+                    (TaskId::SmithG1, "`#!`"),
+                    (TaskId::CosineSample, "task files are leaves"),
+                ] {
+                    assert_eq!(gradescope_points(&results, task).0, 0.0, "{task:?}");
+                    assert!(text.contains(refusal), "{refusal}: {text}");
+                }
                 let (_, mis_max) = gradescope_points(&results, TaskId::Mis);
                 assert_eq!(
                     gradescope_points(&results, TaskId::Mis).0,
@@ -443,8 +486,11 @@ fn a_class_run_bounds_a_compile_time_bomb_and_retries_what_was_not_graded() {
     assert_eq!(reflect["points"], reflect["max_points"], "{reflect}");
     let bomb = read_json(&out.join("students/bomb.json"));
     assert_eq!(bomb["status"], "build error", "{bomb}");
+    // Whichever bound comes first: the compiler's CPU time, or (on a busy machine) the
+    // build's wall deadline.
+    let message = bomb["message"].as_str().unwrap();
     assert!(
-        bomb["message"].as_str().unwrap().contains("CPU-time bound"),
+        message.contains("CPU-time bound") || message.contains("did not finish within"),
         "{bomb}"
     );
     assert!(

@@ -493,7 +493,7 @@ fn watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(dir: &Path) {
         &[
             "rebuilding and regrading",
             "Compiling pbrlab-exercises",
-            "5.0/5",
+            "5/5",
         ],
     );
     std::fs::write(&file, "pub fn reflect(wo: Vec3, n: Vec3) -> Vec3 {\n").unwrap();

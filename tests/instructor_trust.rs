@@ -158,6 +158,14 @@ fn catalogue() -> Vec<(&'static str, String, usize)> {
             4,
         ),
         (
+            "forwards to the framework's volumetric path tracer",
+            smith_g1(
+                "    let _ = crate::integrator::volpath::MAX_TRACKING_STEPS;\n    0.0",
+                "",
+            ),
+            4,
+        ),
+        (
             "uses unsafe code",
             smith_g1(
                 "    unsafe { std::mem::transmute::<u32, f32>(0x3f80_0000) }",

@@ -11,7 +11,7 @@ use crate::grade::credit::Credit;
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
 use crate::grade::runner::{GradeOptions, grade};
 use crate::grade::student_build::{BuildFailure, StudentBuild};
-use crate::grade::verdict::{GradeReport, TaskStatus};
+use crate::grade::verdict::{GradeReport, TaskStatus, format_points};
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
@@ -376,9 +376,19 @@ impl ClassRun<'_> {
         }
     }
 
+    /// Saves `result`, and the feedback to hand back beside it: the text report
+    /// (`students/<name>.txt`) and the HTML page (`students/<name>/index.html`).
     fn save(&self, result: &StudentResult) -> anyhow::Result<()> {
+        let file = self.result_file(&result.student);
+        if let Some(report) = &result.report {
+            crate::atomic_file::write(
+                &file.with_extension("txt"),
+                crate::grade::report::text(report).as_bytes(),
+            )?;
+            crate::grade::report::write_html(report, &file.with_extension(""))?;
+        }
         let json = serde_json::to_string_pretty(result)?;
-        crate::atomic_file::write(&self.result_file(&result.student), json.as_bytes())
+        crate::atomic_file::write(&file, json.as_bytes())
     }
 
     /// Writes `class.csv` and `summary.md` from the saved results of `all`.
@@ -445,13 +455,18 @@ pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
                 .as_ref()
                 .and_then(|rep| rep.task(e))
                 .map(|t| t.points);
-            s += &format!(",{}", points.unwrap_or(0.0));
+            s += &format!(",{}", format_points(points.unwrap_or(0.0)));
         }
         let (total, max) = r
             .report
             .as_ref()
             .map_or((0.0, 0.0), |rep| (rep.score, rep.max_score));
-        s += &format!(",{total},{max},{}\n", csv_field(&r.status));
+        s += &format!(
+            ",{},{},{}\n",
+            format_points(total),
+            format_points(max),
+            csv_field(&r.status)
+        );
     }
     s
 }
@@ -460,17 +475,25 @@ pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
 /// attempted, and the check that failed most often in the submissions that failed it.
 pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
     let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
+    let count_status = |status: &str| results.iter().filter(|r| r.status == status).count();
     let mut s = format!(
-        "# Class summary\n\n{} submissions, {} graded, {} not graded.\n\n",
+        "# Class summary\n\n{} submissions, {} graded, {} build errors (0 points), {} not \
+         graded.\n\n",
         results.len(),
         graded.len(),
-        results.len() - graded.len()
+        count_status(BUILD_ERROR),
+        count_status(NOT_GRADED)
     );
+    if count_status(NOT_GRADED) > 0 {
+        s += "Not graded means the grading machinery failed, not the submission: the same \
+              command grades these again.\n\n";
+    }
     for r in results.iter().filter(|r| r.report.is_none()) {
         let _ = writeln!(
             s,
-            "- {} not graded: {}",
+            "- {} {}: {}",
             r.student,
+            r.status,
             r.message.lines().next().unwrap_or("")
         );
     }
@@ -604,5 +627,6 @@ mod tests {
             text.contains("cy not graded: the submission did not build"),
             "{text}"
         );
+        assert!(text.contains("grades these again"), "{text}");
     }
 }

@@ -173,6 +173,12 @@ fn walk(dir: &Path, prefix: &str, intake: &mut Intake, seen: &mut usize) -> anyh
             intake.ignored.push(format!("{path}: a symbolic link"));
         } else if meta.is_dir() {
             walk(&entry.path(), &format!("{path}/"), intake, seen)?;
+        } else if meta.is_file() && name.to_ascii_lowercase().ends_with(".zip") {
+            // A zip uploaded beside (or instead of) the files: its entries are offered in
+            // turn, one level deep (a zip inside it is not opened).
+            if let Err(e) = take_zip(&entry.path(), intake) {
+                intake.ignored.push(format!("{path}: {e:#}"));
+            }
         } else if meta.is_file() {
             intake.offer(&path, meta.len(), || {
                 let mut bytes = Vec::new();
@@ -330,6 +336,29 @@ mod tests {
             std::fs::read_to_string(scratch.join("reflect.rs")).unwrap(),
             "// stub of reflect",
             "a task not taken is its stub"
+        );
+    }
+
+    #[test]
+    fn a_zip_inside_a_submission_folder_is_read() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("exercises.zip");
+        let mut zip = zip::ZipWriter::new(std::fs::File::create(&file).unwrap());
+        zip.start_file("exercises/mis.rs", zip::write::SimpleFileOptions::default())
+            .unwrap();
+        zip.write_all(b"// mis").unwrap();
+        zip.finish().unwrap();
+        std::fs::write(dir.path().join("reflect.rs"), "// reflect").unwrap();
+        std::fs::write(dir.path().join("broken.zip"), "not a zip").unwrap();
+        let intake = take(dir.path()).unwrap();
+        assert_eq!(
+            intake.taken.keys().copied().collect::<Vec<_>>(),
+            [TaskId::Reflect, TaskId::Mis]
+        );
+        assert!(
+            intake.ignored.iter().any(|i| i.starts_with("broken.zip: ")),
+            "{:?}",
+            intake.ignored
         );
     }
 

@@ -19,9 +19,10 @@ pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
 pub struct Args {
     /// The scene file (default: scenes/cornell.yaml).
     pub scene: Option<PathBuf>,
-    /// Whose task code renders (one of the possible values below; by default the
-    /// reference where this build has it, otherwise yours). In the handout, `mixed` takes
-    /// the compiled reference (tools/reference/) for the tasks you have not written.
+    /// Whose task code renders: `student` (yours), `mixed` (yours where written, the
+    /// reference elsewhere) or `reference`; by default the reference where this build has
+    /// it, otherwise yours. In the handout, `mixed` and `reference` take the compiled
+    /// reference (tools/reference/).
     #[arg(long = "impl", value_enum)]
     pub implementation: Option<ImplChoice>,
     /// Samples per pixel (overrides the scene's; with --resume, the new total).
@@ -234,6 +235,16 @@ pub fn run(args: Args) -> Result<()> {
     let checkpoint_path = checkpoint::path_for(&output_path);
     let start = if args.resume && checkpoint_path.is_file() {
         let state = checkpoint::load(&checkpoint_path, &origin)?;
+        if args.spp.is_none() && state.spp_done >= scene.settings().spp {
+            bail!(
+                "{} already has {} spp, the scene's {} or more: pass the new total with \
+                 --spp, e.g. `--resume --spp {}`",
+                checkpoint_path.display(),
+                state.spp_done,
+                scene.settings().spp,
+                state.spp_done.saturating_mul(2)
+            );
+        }
         eprintln!(
             "resuming {} at {}/{} spp",
             checkpoint_path.display(),
@@ -283,6 +294,16 @@ pub fn run(args: Args) -> Result<()> {
         output_path.with_extension("png"),
     );
     println!("wrote {} and {}", exr.display(), png.display());
+    if s.spp < scene.settings().spp
+        && let Some(limit) = args.time
+    {
+        println!(
+            "stopped by --time {:?} at {} of {} spp; `--resume` continues the render",
+            limit,
+            s.spp,
+            scene.settings().spp
+        );
+    }
     println!(
         "{}×{} at {} spp in {:.2} s: {:.3} M paths/s, {:.3} M paths per CPU-second ({} threads, {:.1} M rays per CPU-second)",
         s.width,

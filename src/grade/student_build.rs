@@ -145,7 +145,7 @@ impl StudentBuild<'_> {
         loop {
             self.place_stubs(&stubs, &errors)?;
             let left = deadline.saturating_sub(start.elapsed());
-            let round = self.cargo(&stubs, !errors.is_empty(), left)?;
+            let round = self.cargo(&stubs, !errors.is_empty(), left, deadline)?;
             if round.success {
                 let worker = round
                     .worker
@@ -219,8 +219,15 @@ impl StudentBuild<'_> {
         Ok(())
     }
 
-    /// Runs cargo once, reading its JSON messages.
-    fn cargo(&self, stubs: &Path, stubbed: bool, left: Duration) -> anyhow::Result<Round> {
+    /// Runs cargo once, reading its JSON messages; `left` of the build's `deadline`
+    /// remains.
+    fn cargo(
+        &self,
+        stubs: &Path,
+        stubbed: bool,
+        left: Duration,
+        deadline: Duration,
+    ) -> anyhow::Result<Round> {
         let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
         cargo
             .current_dir(self.root)
@@ -311,7 +318,7 @@ impl StudentBuild<'_> {
             Err(_) => {
                 kill_group(group);
                 let _ = child.wait();
-                return Err(BuildFailure::TimedOut(left).into());
+                return Err(BuildFailure::TimedOut(deadline).into());
             }
         };
         let status = child.wait().context("waiting for cargo")?;
@@ -481,6 +488,43 @@ fn read_message(line: &str, exercises: &Path, echo: bool, round: &mut Round) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_compiled_copy_has_the_stub_in_place_of_each_failing_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let exercises = dir.path().join("exercises");
+        std::fs::create_dir(&exercises).unwrap();
+        std::fs::write(exercises.join("reflect.rs"), "// refused: mod stolen;").unwrap();
+        std::fs::write(exercises.join("mis.rs"), "// mine").unwrap();
+        let stub = |task: TaskId| Ok(format!("// the stub of {}", task.name()));
+        let build = StudentBuild {
+            root: dir.path(),
+            exercises: &exercises,
+            bins: &[],
+            handout: false,
+            stub: &stub,
+            echo: false,
+            deadline: Duration::from_secs(1),
+            offline: true,
+            bounded: true,
+        };
+        let copy = stub_folder(&exercises);
+        let errors = [(TaskId::Reflect, "refused".to_string())].into();
+        build.place_stubs(&copy, &errors).unwrap();
+        let read = |name: &str| std::fs::read_to_string(copy.join(name)).ok();
+        assert_eq!(
+            read("reflect.rs").as_deref(),
+            Some("// the stub of reflect")
+        );
+        assert_eq!(read("mis.rs").as_deref(), Some("// mine"));
+        assert_eq!(read("smith_g1.rs"), None, "a missing file stays missing");
+        assert!(
+            !copy.starts_with(&exercises),
+            "the copy is not the student's folder"
+        );
+        build.place_stubs(&copy, &BTreeMap::new()).unwrap();
+        assert!(!copy.exists(), "no copy when nothing failed");
+    }
 
     #[test]
     fn a_refusal_line_names_its_task() {

@@ -95,6 +95,25 @@ pub fn total(values: impl IntoIterator<Item = f64>) -> f64 {
     values.into_iter().fold(0.0, |a, b| a + b)
 }
 
+/// `points` rounded to hundredths, for what a person reads (a results file's score, a
+/// table's cell); sums are taken of the exact values first.
+pub fn display_points(points: f64) -> f64 {
+    (points * 100.0).round() / 100.0 + 0.0
+}
+
+/// `points` as a person reads them: at most two decimals, no trailing zeros (`3.33`, `24.7`,
+/// `6`).
+pub fn format_points(points: f64) -> String {
+    let text = format!("{:.2}", display_points(points));
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// Serialises points rounded to hundredths ([`display_points`]): serde's
+/// `serialize_with`.
+pub fn serialize_points<S: serde::Serializer>(points: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_f64(display_points(*points))
+}
+
 /// The maximum number of failure messages a check keeps.
 pub const MAX_MESSAGES: usize = 8;
 
@@ -301,5 +320,20 @@ impl GradeReport {
     /// The outcome of `task`, if it was graded.
     pub fn task(&self, task: &str) -> Option<&TaskOutcome> {
         self.tasks.iter().find(|t| t.task == task)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn points_read_with_two_decimals_at_most() {
+        assert_eq!(format_points(10.0 / 3.0), "3.33");
+        assert_eq!(format_points(24.700000000000003), "24.7");
+        assert_eq!(format_points(6.0), "6");
+        assert_eq!(format_points(6.273015873015873), "6.27");
+        assert_eq!(format_points(-0.0), "0");
+        assert_eq!(display_points(0.125), 0.13);
     }
 }

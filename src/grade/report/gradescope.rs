@@ -10,7 +10,8 @@ use serde::Serialize;
 /// available is the sum of the tests' `max_score`; the spec has no top-level one).
 #[derive(Debug, Serialize)]
 pub struct Results {
-    /// Total score.
+    /// Total score: the exact sum of the tests' scores, shown to hundredths.
+    #[serde(serialize_with = "crate::grade::verdict::serialize_points")]
     pub score: f64,
     /// Seconds the grade took.
     pub execution_time: f64,
@@ -29,9 +30,11 @@ pub struct Results {
 pub struct Test {
     /// The task and its title.
     pub name: String,
-    /// Points scored.
+    /// Points scored (exact; shown to hundredths).
+    #[serde(serialize_with = "crate::grade::verdict::serialize_points")]
     pub score: f64,
-    /// Points available.
+    /// Points available (exact; shown to hundredths).
+    #[serde(serialize_with = "crate::grade::verdict::serialize_points")]
     pub max_score: f64,
     /// `passed` or `failed`.
     pub status: &'static str,
@@ -164,7 +167,7 @@ mod tests {
     use super::*;
     use crate::grade::checks::score;
     use crate::grade::credit::Credit;
-    use crate::grade::verdict::{CheckKind, CheckResult};
+    use crate::grade::verdict::{CheckKind, CheckResult, display_points};
 
     #[test]
     fn partial_credit_reaches_gradescope_as_the_grader_scored_it() {
@@ -199,5 +202,12 @@ mod tests {
             "Gradescope {sum}, grader {points}"
         );
         assert!(tests.iter().all(|t| t.status == "failed"));
+        // What Gradescope shows: hundredths, not 3.3333333333333335.
+        for test in serde_json::to_value(&tests).unwrap().as_array().unwrap() {
+            for key in ["score", "max_score"] {
+                let shown = test[key].as_f64().unwrap();
+                assert_eq!(shown, display_points(shown), "{test}");
+            }
+        }
     }
 }

@@ -4,7 +4,7 @@
 //! no per-test visibility, so the hidden cases count in the score but are not listed.
 
 use super::gradescope::gradescope;
-use crate::grade::verdict::{GradeReport, total};
+use crate::grade::verdict::{GradeReport, format_points, total};
 use serde::Serialize;
 
 /// The top level of results.json.
@@ -27,9 +27,11 @@ pub struct Results {
 pub struct Test {
     /// The task and its title.
     pub name: String,
-    /// Points scored.
+    /// Points scored (exact; shown to hundredths).
+    #[serde(serialize_with = "crate::grade::verdict::serialize_points")]
     pub points: f64,
-    /// Points available.
+    /// Points available (exact; shown to hundredths).
+    #[serde(serialize_with = "crate::grade::verdict::serialize_points")]
     pub max_points: f64,
     /// What was checked and what failed.
     pub output: String,
@@ -48,7 +50,9 @@ pub fn prairielearn(report: &GradeReport, message: &str) -> Results {
     let mut text = message.to_string();
     if hidden > 0.0 {
         text += &format!(
-            "{hidden} of the {available} points are hidden cases, counted in the score.\n"
+            "{} of the {} points are hidden cases, counted in the score.\n",
+            format_points(hidden),
+            format_points(available)
         );
     }
     text += &all.output;

@@ -1,7 +1,7 @@
 //! The terminal table.
 
 use crate::grade::output::fmt_num;
-use crate::grade::verdict::{GradeReport, TaskOutcome, TaskStatus, Visibility};
+use crate::grade::verdict::{GradeReport, TaskOutcome, TaskStatus, Visibility, format_points};
 use std::fmt::Write;
 
 /// The worst error of a task, short: `abs 2.1e-3 (rel 0.8 %)`.
@@ -17,50 +17,90 @@ fn worst(outcome: &TaskOutcome) -> String {
     }
 }
 
-/// The table: task, status, points, worst error, time; then what failed, per task; then the
-/// total.
-pub fn text(report: &GradeReport) -> String {
-    let mut s = String::new();
+/// `text` cut to `width` characters, with `…` where it was cut.
+fn fit(text: &str, width: usize) -> String {
+    if text.chars().count() <= width {
+        return text.to_string();
+    }
+    let kept: String = text.chars().take(width.saturating_sub(1)).collect();
+    format!("{kept}…")
+}
+
+/// A task's status as the table shows it: a scene waiting for several tasks says how many
+/// (the details below, and `pbrlab needs SCENE`, name them).
+fn status_cell(t: &TaskOutcome) -> String {
+    match &t.status {
+        TaskStatus::NeedsTask { task } if task.contains(", ") => {
+            format!("needs {} tasks", task.split(", ").count())
+        }
+        status => status.label(),
+    }
+}
+
+/// One row of the table: at most 76 characters, so it fits an 80-column terminal.
+fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time: &str) {
     let _ = writeln!(
         s,
-        "{:<16} {:<16} {:>11}  {:<26} {:>7}",
-        "task", "status", "points", "worst error", "time"
+        "{:<16} {:<15} {:>9}  {:<24} {:>7}",
+        fit(task, 16),
+        fit(status, 15),
+        points,
+        fit(worst, 24),
+        time
     );
-    let _ = writeln!(s, "{}", "-".repeat(82));
+}
+
+/// The table: task, status, points, worst error, time (one row per task and scene, 76
+/// columns); the total; then what failed, per task, and one line for the scenes that wait
+/// for tasks to pass.
+pub fn text(report: &GradeReport) -> String {
+    let mut s = String::new();
+    row(&mut s, "task", "status", "points", "worst error", "time");
+    let rule = "-".repeat(76);
+    let _ = writeln!(s, "{rule}");
     for t in &report.tasks {
         let points = if t.max_points > 0.0 {
-            format!("{:.1}/{}", t.points, t.max_points)
+            format!(
+                "{}/{}",
+                format_points(t.points),
+                format_points(t.max_points)
+            )
         } else {
             "-".into()
         };
-        let _ = writeln!(
-            s,
-            "{:<16} {:<16} {:>11}  {:<26} {:>6.2}s",
-            t.task,
-            t.status.label(),
-            points,
-            worst(t),
-            t.seconds
-        );
+        let time = format!("{:.2}s", t.seconds);
+        row(&mut s, &t.task, &status_cell(t), &points, &worst(t), &time);
     }
-    let _ = writeln!(s, "{}", "-".repeat(82));
-    let _ = writeln!(
-        s,
-        "{:<16} {:<16} {:>11}  {:<26} {:>6.2}s",
-        "total",
-        format!("{} implementation", report.implementation),
-        format!("{:.1}/{}", report.score, report.max_score),
-        "",
-        report.seconds
+    let _ = writeln!(s, "{rule}");
+    let total = format!(
+        "{}/{}",
+        format_points(report.score),
+        format_points(report.max_score)
     );
+    let time = format!("{:.2}s", report.seconds);
+    row(&mut s, "total", &report.implementation, &total, "", &time);
     for protections in &report.sandbox {
         let _ = writeln!(s, "sandbox of the workers: {protections}");
     }
+    let mut waiting = Vec::new();
     for t in &report.tasks {
+        if let (TaskStatus::NeedsTask { task }, Some(scene)) =
+            (&t.status, t.task.strip_prefix("scene: "))
+        {
+            waiting.push(format!("{scene} ({task})"));
+            continue;
+        }
         let details = details(t);
         if !details.is_empty() {
             let _ = write!(s, "\n{}: {}\n{details}", t.task, t.status.label());
         }
+    }
+    if !waiting.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nScenes are graded once the tasks they call pass: {}.",
+            waiting.join("; ")
+        );
     }
     s
 }
