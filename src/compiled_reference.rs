@@ -34,11 +34,57 @@ pub const TASKS_SYMBOL: &[u8] = b"pbrlab_reference_tasks";
 
 /// The library's file name on this platform (`libpbrlab_reference.so` on Linux).
 pub fn file_name() -> String {
+    library_file("pbrlab_reference")
+}
+
+/// The file name of the library that holds `task`'s reference and nothing else of the
+/// reference (`libpbrlab_reference_smith_g1.so` on Linux): an example of
+/// `tools/reference-library/`, which the grader's workers load ([`crate::grade::references`]).
+pub fn task_file_name(task: crate::worksheet::TaskId) -> String {
+    library_file(&format!("pbrlab_reference_{}", task.name()))
+}
+
+fn library_file(stem: &str) -> String {
     format!(
-        "{}pbrlab_reference{}",
+        "{}{stem}{}",
         std::env::consts::DLL_PREFIX,
         std::env::consts::DLL_SUFFIX
     )
+}
+
+/// Defines the two C functions of a reference library ([`ABI_SYMBOL`], [`TASKS_SYMBOL`]),
+/// the table being `$table`, a constant expression of type
+/// [`TaskFns`](crate::worksheet::TaskFns). Built with [`TaskFns::ABSENT`] and
+/// [`TaskFns::with_task`](crate::worksheet::TaskFns::with_task), the table refers to one
+/// task's functions only, so the linker leaves every other task's reference out of the
+/// library.
+///
+/// [`TaskFns::ABSENT`]: crate::worksheet::TaskFns::ABSENT
+#[macro_export]
+macro_rules! reference_library {
+    ($table:expr) => {
+        /// [`pbrlab::compiled_reference::ABI_SYMBOL`]: writes the signature's length to
+        /// `len` and returns its bytes, which live as long as the library.
+        ///
+        /// # Safety
+        /// `len` must be valid for a write.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn pbrlab_reference_abi(len: *mut usize) -> *const u8 {
+            static SIGNATURE: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+            let signature = SIGNATURE.get_or_init($crate::compiled_reference::abi_signature);
+            // SAFETY: the caller passes a writable `usize`.
+            unsafe { len.write(signature.len()) };
+            signature.as_ptr()
+        }
+
+        /// [`pbrlab::compiled_reference::TASKS_SYMBOL`]: the library's task table, to be
+        /// read only by a build whose signature is this library's.
+        #[unsafe(no_mangle)]
+        pub extern "C" fn pbrlab_reference_tasks() -> *const std::ffi::c_void {
+            static TABLE: $crate::worksheet::TaskFns = $table;
+            (&raw const TABLE).cast()
+        }
+    };
 }
 
 /// Where a repository keeps its compiled reference: `tools/reference/` in it.

@@ -1,8 +1,7 @@
-//! The task tables the root package's binaries (`pbrlab`, `pbrlab-worker`) link: the
-//! student's crate, and in the instructor build the reference's (in the handout, the
-//! compiled reference `pbrlab handout` put in `tools/reference/`, when it fits this build).
-//! A module of those binaries (`mod linked_tables;` in each), not of the framework beside
-//! it in `src/`.
+//! The task tables the `pbrlab` binary links: the student's crate, and in the instructor
+//! build the reference's (in the handout, the compiled reference `pbrlab handout` put in
+//! `tools/reference/`, when it fits this build). A module of that binary, not of the
+//! framework beside it in `src/`. The worker binary links no reference.
 
 use pbrlab::implementation::{Implementations, install};
 

@@ -1,13 +1,18 @@
 //! The `pbrlab-worker` binary: the process in which the grader runs student code, one job
-//! per process (see `pbrlab::grade::worker`). It links the student's crate, the reference's
-//! (in the instructor build, for the tasks a job does not take from the student) and the
-//! renderer, but nothing of the grader's verdicts: no expected data, no reference render.
-//! Those are embedded in the framework library and reachable only from the grader's code,
-//! which this `main` never calls, so the linker leaves them out of this file.
+//! per process (see `pbrlab::grade::worker`). It links the student's crate and the
+//! renderer, and no reference and nothing of the grader's verdicts: for the tasks a job does
+//! not take from the student it loads the reference of each from a library of its own,
+//! which the grader names (`pbrlab::grade::references`), never the graded task's. Expected
+//! data and reference renders are embedded in the framework library and reachable only
+//! from the grader's code, which this `main` never calls, so the linker leaves them out of
+//! this file.
 
-mod linked_tables;
+use pbrlab::implementation::{Implementations, install};
 
 fn main() {
-    linked_tables::install_linked();
+    install(Implementations {
+        student: pbrlab_exercises::TASKS,
+        reference: None,
+    });
     pbrlab::grade::worker::serve_production()
 }

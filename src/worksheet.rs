@@ -434,6 +434,11 @@ pub static TASKS: [TaskInfo; 15] = [
     },
 ];
 
+/// The body of every function of [`TaskFns::ABSENT`].
+fn absent(task: &str) -> ! {
+    panic!("no implementation of the task `{task}` is in this process")
+}
+
 /// Generates the [`Tasks`] trait, the function table [`TaskFns`] and its macro
 /// [`task_table!`](crate::task_table) from one list of task functions.
 ///
@@ -492,9 +497,22 @@ macro_rules! tasks {
         }
 
         impl TaskFns {
+            /// The table in which every function panics, saying that no implementation of
+            /// its task is in this process: the start of a table built task by task, such
+            /// as a reference library that holds one task ([`crate::compiled_reference`]).
+            pub const ABSENT: TaskFns = TaskFns {
+                $($(
+                    $name: |$(_: tasks!(@table $ctx),)? $($arg: $ty),*| -> $ret {
+                        $(let _ = $arg;)*
+                        absent(stringify!($module))
+                    },
+                )+)+
+            };
+
             /// The table that takes `task`'s functions from `from` and every other one from
-            /// `self`.
-            pub fn with_task(mut self, from: &TaskFns, task: TaskId) -> TaskFns {
+            /// `self`. A `const fn`, so that a static built with it refers to `task`'s
+            /// functions of `from` and to no other.
+            pub const fn with_task(mut self, from: &TaskFns, task: TaskId) -> TaskFns {
                 match task {
                     $(TaskId::$variant => { $(self.$name = from.$name;)+ })+
                 }

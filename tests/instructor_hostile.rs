@@ -225,7 +225,7 @@ fn worker_entry() {
             assert!(alpha.to_bits() % 2 == 0, "{LEAK} {}", alpha.to_bits());
             pbrlab_solutions::smith_g1::smith_g1(w, alpha)
         });
-        pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
+        pbrlab::grade::worker::serve(|spec, _| Ok(patch.only(spec.student_tasks())))
     }
     static ONCE: Once = Once::new();
     let mut patch = Patch::new(TaskId::SmithG1);
@@ -241,7 +241,7 @@ fn worker_entry() {
         "load" => || ONCE.call_once(load_code),
         other => panic!("unknown attack {other}"),
     });
-    pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
+    pbrlab::grade::worker::serve(|spec, _| Ok(patch.only(spec.student_tasks())))
 }
 
 /// Grades reflect, smith_g1 and cook_torrance with workers that attack with `attack`.
@@ -538,5 +538,60 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
             !contains(&worker, piece),
             "{file} is in the worker's binary"
         );
+    }
+}
+
+/// The start of the legacy-mangled symbol of every function of `task`'s reference
+/// (`_ZN16pbrlab_solutions8smith_g1…`): the reference's functions are reached only through
+/// task tables, so each keeps a symbol of its own.
+fn reference_symbol(task: TaskId) -> Vec<u8> {
+    let module = task.name();
+    format!("16pbrlab_solutions{}{module}", module.len()).into_bytes()
+}
+
+#[test]
+fn no_worker_holds_the_reference_of_the_task_it_grades() {
+    use pbrlab::grade::worker::ImplSpec;
+    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
+    let worker = std::fs::read(env!("CARGO_BIN_EXE_pbrlab-worker")).expect("the worker's binary");
+    assert!(
+        !contains(&worker, b"16pbrlab_solutions"),
+        "the worker's binary links the reference"
+    );
+    for task in TaskId::ALL {
+        let symbol = reference_symbol(task);
+        // The grader links the reference, so the search finds what it looks for ...
+        assert!(
+            contains(&grader, &symbol),
+            "{task:?}'s reference is not in the grader's binary"
+        );
+        // ... and the libraries a worker that grades `task` loads hold every task it may
+        // take from the reference, and not `task`.
+        let spec = ImplSpec::Mixed {
+            student: vec![task.name().to_string()],
+        };
+        let libraries = pbrlab::grade::references::for_spec(&spec).expect("reference libraries");
+        let others: Vec<TaskId> = TaskId::ALL.into_iter().filter(|t| *t != task).collect();
+        assert_eq!(
+            libraries
+                .keys()
+                .cloned()
+                .collect::<std::collections::BTreeSet<_>>(),
+            others.iter().map(|t| t.name().to_string()).collect()
+        );
+        for other in others {
+            let path = &libraries[other.name()];
+            let bytes = std::fs::read(path).expect("a reference library");
+            assert!(
+                contains(&bytes, &reference_symbol(other)),
+                "{} lacks the reference of {other:?}",
+                path.display()
+            );
+            assert!(
+                !contains(&bytes, &symbol),
+                "{} holds the reference of {task:?}, which it grades",
+                path.display()
+            );
+        }
     }
 }

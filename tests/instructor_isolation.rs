@@ -70,7 +70,7 @@ fn worker_entry() {
     } else {
         patch.misbehave = Some(misbehaviour(&name));
     }
-    pbrlab::grade::worker::serve(|spec| Ok(patch.only(spec.student_tasks())))
+    pbrlab::grade::worker::serve(|spec, _| Ok(patch.only(spec.student_tasks())))
 }
 
 /// Workers that are this test binary, serving the reference with `misbehaviour`.
@@ -275,4 +275,29 @@ fn a_worker_that_cannot_start_is_the_graders_fault() {
         "{:?}",
         reflect.status
     );
+}
+
+#[test]
+fn the_references_estimators_run_in_a_worker_of_their_own_for_the_time_comparison() {
+    instructor_support::install();
+    let options = GradeOptions {
+        tasks: vec![TaskId::DeltaTracking],
+        implementation: ImplChoice::Student,
+        timeout: Duration::from_secs(30),
+        memory_limit: 1 << 30,
+        ..GradeOptions::default()
+    };
+    let report = grade(&options, &launcher("print")).expect("grading runs");
+    let task = &report.tasks[0];
+    assert_eq!(task.status, TaskStatus::Passed, "{task:?}");
+    let estimators: Vec<&str> = task
+        .checks
+        .iter()
+        .filter(|c| c.name.starts_with("estimator"))
+        .map(|c| c.summary.as_str())
+        .collect();
+    assert!(!estimators.is_empty(), "{task:?}");
+    for summary in estimators {
+        assert!(summary.contains(" s vs reference "), "{summary}");
+    }
 }

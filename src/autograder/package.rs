@@ -58,9 +58,16 @@ pub fn write(
     std::fs::write(&settings, serde_json::to_string_pretty(&config)?)
         .with_context(|| format!("writing {}", settings.display()))?;
     written.push(Path::new(SOURCE).join(config::FILE));
+    let reference_libraries = crate::grade::references::shell_command();
     let files: Vec<(&str, String, bool)> = match service {
         Service::Gradescope => vec![
-            ("setup.sh", SETUP.replace("@TOOLCHAIN@", TOOLCHAIN), true),
+            (
+                "setup.sh",
+                SETUP
+                    .replace("@TOOLCHAIN@", TOOLCHAIN)
+                    .replace("@REFERENCE_LIBRARIES@", &reference_libraries),
+                true,
+            ),
             ("run_autograder", RUN_AUTOGRADER.to_string(), true),
         ],
         Service::Prairielearn => {
@@ -71,7 +78,9 @@ pub fn write(
             vec![
                 (
                     "Dockerfile",
-                    DOCKERFILE.replace("@TOOLCHAIN@", TOOLCHAIN),
+                    DOCKERFILE
+                        .replace("@TOOLCHAIN@", TOOLCHAIN)
+                        .replace("@REFERENCE_LIBRARIES@", &reference_libraries),
                     false,
                 ),
                 ("entrypoint.sh", ENTRYPOINT.to_string(), true),

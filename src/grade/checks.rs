@@ -83,6 +83,7 @@ impl TaskInput {
             sampling,
             seed: self.seed,
             values_only: false,
+            estimators_only: false,
         }];
         if !self.hidden.is_empty() {
             inputs.push(WorkerInput {
@@ -93,6 +94,7 @@ impl TaskInput {
                 sampling: Vec::new(),
                 seed: self.seed,
                 values_only: true,
+                estimators_only: false,
             });
         }
         inputs
@@ -149,6 +151,10 @@ pub struct WorkerInput {
     /// Run the value calls and nothing else (the worker of the hidden cases).
     #[serde(default)]
     pub values_only: bool,
+    /// Run the estimators and nothing else (the reference's run beside the student's, for
+    /// the time comparison, in a worker of its own).
+    #[serde(default)]
+    pub estimators_only: bool,
 }
 
 /// What one sampling check's sampler produced in a worker: its binned directions, the
@@ -371,6 +377,10 @@ pub fn run_task<T: Tasks>(
     progress: &mut ProgressSink<'_>,
 ) -> Vec<Raw> {
     let mut raw = Vec::new();
+    if input.estimators_only {
+        run_estimators(t, task, input, progress, &mut raw);
+        return raw;
+    }
     for calls in &input.values {
         progress(Progress::Starting(&calls.check));
         let outputs = Raw::Values(values::evaluate(&calls.check, &calls.calls, t));
@@ -402,39 +412,7 @@ pub fn run_task<T: Tasks>(
             }
         }));
     }
-    // The reference's estimators run beside the student's, for the time comparison.
-    let mut reference: Vec<Option<EstimatorSpec<'_>>> = crate::implementation::try_reference()
-        .map(|r| {
-            catalogue::estimators(task, r)
-                .into_iter()
-                .map(Some)
-                .collect()
-        })
-        .unwrap_or_default();
-    let estimators = catalogue::estimators(task, t);
-    reference.resize_with(estimators.len(), || None);
-    for (index, (mut spec, reference)) in estimators.into_iter().zip(reference).enumerate() {
-        let name = format!("estimator: {}", spec.name);
-        raw.push(measure_raw(&name, progress, || {
-            let mut reference = reference.map(|r| r.estimate);
-            let outcome = panics::catch(|| {
-                estimator::measure(
-                    spec.analytic,
-                    spec.samples,
-                    (input.seed, 200 + index as u64),
-                    spec.estimate.as_mut(),
-                    reference.as_deref_mut(),
-                )
-            });
-            |seconds| {
-                Raw::Estimate(EstimateOutputs {
-                    index,
-                    outcome,
-                    seconds,
-                })
-            }
-        }));
-    }
+    run_estimators(t, task, input, progress, &mut raw);
     for (index, mut pair) in catalogue::variance_pairs(task, t).into_iter().enumerate() {
         raw.push(measure_raw(&pair.name(), progress, || {
             let outcome = panics::catch(|| {
@@ -473,6 +451,36 @@ pub fn run_task<T: Tasks>(
         ));
     }
     raw
+}
+
+/// Runs each of `task`'s estimators with `t`, adding their outputs to `raw`.
+fn run_estimators<T: Tasks>(
+    t: &T,
+    task: TaskId,
+    input: &WorkerInput,
+    progress: &mut ProgressSink<'_>,
+    raw: &mut Vec<Raw>,
+) {
+    for (index, mut spec) in catalogue::estimators(task, t).into_iter().enumerate() {
+        let name = format!("estimator: {}", spec.name);
+        raw.push(measure_raw(&name, progress, || {
+            let outcome = panics::catch(|| {
+                estimator::measure(
+                    spec.analytic,
+                    spec.samples,
+                    (input.seed, 200 + index as u64),
+                    spec.estimate.as_mut(),
+                )
+            });
+            |seconds| {
+                Raw::Estimate(EstimateOutputs {
+                    index,
+                    outcome,
+                    seconds,
+                })
+            }
+        }));
+    }
 }
 
 /// Runs `measure` as the step `name`, times it, and reports the raw output it makes (from

@@ -40,9 +40,10 @@ pub struct Launcher {
 
 impl Launcher {
     /// The `pbrlab-worker` binary built beside the running executable. It links the
-    /// student's code, the reference and the renderer, but not the grader's expected data
-    /// or reference renders (nothing reachable from its `main` uses them, so the linker
-    /// leaves them out: `tests/instructor_hostile.rs` checks the file).
+    /// student's code and the renderer, but no reference (it loads the libraries of the
+    /// tasks a job takes from the reference, [`super::references`]) and not the grader's
+    /// expected data or reference renders (nothing reachable from its `main` uses them, so
+    /// the linker leaves them out: `tests/instructor_hostile.rs` checks the file).
     pub fn current_exe() -> anyhow::Result<Self> {
         let program = worker_beside(&std::env::current_exe()?);
         anyhow::ensure!(
@@ -185,6 +186,11 @@ fn worker_user(program: &Path, scratch: &Path) -> Option<u32> {
 
 /// Runs `job` in a new worker, killing it after `timeout`.
 pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
+    // Before the clock starts: the first call may build the reference libraries.
+    let references = match super::references::for_spec(&job.implementation) {
+        Ok(references) => references,
+        Err(e) => return WorkerRun::failed(WorkerFailure::Grader(format!("{e:#}"))),
+    };
     let start = Instant::now();
     let scratch = match tempfile::Builder::new().prefix("pbrlab-worker-").tempdir() {
         Ok(dir) => dir,
@@ -208,6 +214,7 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
             },
         },
         job: job.clone(),
+        references,
     };
     run_in(launcher, &delivery, scratch.path(), user, timeout, start)
 }

@@ -37,6 +37,7 @@ pub mod lenient_f64;
 pub mod output;
 pub mod power;
 pub mod probe;
+pub mod references;
 pub mod renders;
 pub mod report;
 pub mod runner;

@@ -136,13 +136,7 @@ pub fn estimator_power<T: Tasks + Sync>(task: TaskId, t: &T, seeds: usize) -> Op
             let mut failed = [false; LEVELS.len()];
             for (index, mut spec) in catalogue::estimators(task, t).into_iter().enumerate() {
                 let seed = (seed, 200 + index as u64);
-                let run = measure(
-                    spec.analytic,
-                    spec.samples,
-                    seed,
-                    spec.estimate.as_mut(),
-                    None,
-                );
+                let run = measure(spec.analytic, spec.samples, seed, spec.estimate.as_mut());
                 for (level, e) in LEVELS.iter().enumerate() {
                     let biased = run.clone().map(|m| Measured {
                         moments: m.moments.scaled(1.0 + e),

@@ -1,8 +1,11 @@
 //! Grading a set of tasks: load the expected data, decide which implementation grades which
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
-use super::checks::{TaskInput, judge_finished, judge_task, score};
+use super::checks::{
+    EstimateOutputs, Raw, TaskInput, WorkerInput, judge_finished, judge_task, score,
+};
 use super::credit::Credit;
+use super::estimator::EstimatorRun;
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
 use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
@@ -250,12 +253,30 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
         }
         // The expected outputs stay here; the workers get the calls only, the hidden
         // cases' in a worker of their own.
-        let workers = input.for_workers();
-        graded.push((task, input, workers.len()));
-        for worker in workers {
+        let mut workers = input.for_workers();
+        let implementation = spec_for(task, options, &attempted)?;
+        // The worker of the student's code holds no reference of its task, so the
+        // reference's estimators (for the time comparison) run in one of their own.
+        let reference_estimators = cfg!(feature = "solutions")
+            && implementation != ImplSpec::Reference
+            && has_estimators(task);
+        graded.push((task, input, workers.len(), reference_estimators));
+        let estimators_only = WorkerInput {
+            values: Vec::new(),
+            sampling: Vec::new(),
+            seed: options.seed,
+            values_only: false,
+            estimators_only: true,
+        };
+        let mut specs = vec![implementation; workers.len()];
+        if reference_estimators {
+            workers.push(estimators_only);
+            specs.push(ImplSpec::Reference);
+        }
+        for (worker, implementation) in workers.into_iter().zip(specs) {
             jobs.push(Job {
                 nonce: isolation::nonce(),
-                implementation: spec_for(task, options, &attempted)?,
+                implementation,
                 kind: JobKind::Grade {
                     task: task.name().into(),
                     input: worker,
@@ -266,12 +287,15 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
     }
     let mut sandbox = std::collections::BTreeSet::new();
     let mut runs = run_all(launcher, jobs, options).into_iter();
-    for (task, input, workers) in &graded {
+    for (task, input, workers, reference_estimators) in &graded {
         let Some(mut run) = runs.next() else { break };
         sandbox.extend(run.protections.as_ref().map(ToString::to_string));
         for hidden in runs.by_ref().take(workers - 1) {
             sandbox.extend(hidden.protections.as_ref().map(ToString::to_string));
             join_hidden(&mut run, hidden);
+        }
+        if *reference_estimators && let Some(reference) = runs.next() {
+            join_reference(&mut run, reference);
         }
         outcomes.push((
             task.name().to_string(),
@@ -429,9 +453,13 @@ pub fn task_has_checks(task: TaskId, input: &TaskInput) -> bool {
 
 /// Tasks whose estimator or stability checks need no stored data.
 fn has_code_checks(task: TaskId) -> bool {
-    let t = crate::implementation::student();
-    !super::catalogue::estimators(task, t).is_empty()
+    has_estimators(task)
         || !crate::stability::cases_for::<crate::worksheet::TaskFns>(task).is_empty()
+}
+
+/// True when `task` has estimator checks.
+fn has_estimators(task: TaskId) -> bool {
+    !super::catalogue::estimators(task, crate::implementation::student()).is_empty()
 }
 
 /// Adds the raw outputs of the hidden cases' worker to the visible worker's `run`. Nothing
@@ -445,6 +473,40 @@ fn join_hidden(run: &mut isolation::WorkerRun, hidden: isolation::WorkerRun) {
     match &mut run.outcome {
         Ok(Record::Outputs { raw: visible }) => visible.extend(raw),
         _ => run.finished_raw.extend(raw),
+    }
+}
+
+/// Adds the reference's estimator runs, from a worker that ran the reference alone, to the
+/// student's estimator outputs in `run` (for the time comparison; they judge nothing).
+fn join_reference(run: &mut isolation::WorkerRun, reference: isolation::WorkerRun) {
+    let reference_raw = match reference.outcome {
+        Ok(Record::Outputs { raw }) => raw,
+        _ => reference.finished_raw,
+    };
+    let reference_runs: BTreeMap<usize, EstimatorRun> = reference_raw
+        .into_iter()
+        .filter_map(|raw| match raw {
+            Raw::Estimate(EstimateOutputs {
+                index,
+                outcome: Ok(Ok(measured)),
+                ..
+            }) => Some((index, measured.student)),
+            _ => None,
+        })
+        .collect();
+    let student_raw = match &mut run.outcome {
+        Ok(Record::Outputs { raw }) => raw,
+        _ => &mut run.finished_raw,
+    };
+    for raw in student_raw {
+        if let Raw::Estimate(EstimateOutputs {
+            index,
+            outcome: Ok(Ok(measured)),
+            ..
+        }) = raw
+        {
+            measured.reference = reference_runs.get(index).cloned();
+        }
     }
 }
 

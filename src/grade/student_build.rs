@@ -239,9 +239,7 @@ impl StudentBuild<'_> {
         }
         // A build without the reference in the instructor's repository (whose default
         // features include it) must say so. The handout has no default features to turn
-        // off, and the flag would also turn off the framework's own (empty) default
-        // feature, which plain `cargo run` and `cargo test` turn on: the framework would
-        // compile a second time.
+        // off.
         if self.handout && self.root.join("solutions").is_dir() {
             cargo.arg("--no-default-features");
         }

@@ -15,7 +15,9 @@ use crate::panics;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::anyhow;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::io::{Read, Write};
+use std::path::PathBuf;
 
 /// The marker that starts the result line.
 pub const RESULT_MARKER: &str = "PBRLAB-RESULT";
@@ -96,11 +98,18 @@ pub enum JobKind {
     },
 }
 
-/// What the grader writes to a worker's stdin: the job and the sandbox to run it in.
+/// What the grader writes to a worker's stdin: the job, the reference libraries it may
+/// load, and the sandbox to run it in.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Delivery {
     /// The job.
     pub job: Job,
+    /// For each task the job takes from the reference (every task its [`ImplSpec`] does not
+    /// take from the student), the shared library that holds it
+    /// ([`super::references`]): one task's reference per library in the instructor's build,
+    /// so the graded task's is never in the worker. Loaded before the sandbox closes.
+    #[serde(default)]
+    pub references: BTreeMap<String, PathBuf>,
     /// What the worker may do while it runs the job.
     pub sandbox: Policy,
 }
@@ -182,17 +191,23 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
     })
 }
 
-/// The worker's main loop: reads the [`Delivery`] from stdin, enters its sandbox, builds the
-/// implementation with `make`, runs the job and prints the result line. Never returns: the
-/// process exits right after the result line, so nothing the student left running can
-/// print after it.
-pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
+/// The worker's main loop: reads the [`Delivery`] from stdin, builds the implementation with
+/// `make` (which loads the reference libraries), enters its sandbox, runs the job and prints
+/// the result line. Never returns: the process exits right after the result line, so
+/// nothing the student left running can print after it.
+pub fn serve<T: Tasks>(
+    make: impl FnOnce(&ImplSpec, &BTreeMap<String, PathBuf>) -> anyhow::Result<T>,
+) -> ! {
     let mut text = String::new();
     let delivery: Result<Delivery, String> = std::io::stdin()
         .read_to_string(&mut text)
         .map_err(|e| e.to_string())
         .and_then(|_| serde_json::from_str(&text).map_err(|e| e.to_string()));
-    let Delivery { job, sandbox } = match delivery {
+    let Delivery {
+        job,
+        references,
+        sandbox,
+    } = match delivery {
         Ok(delivery) => delivery,
         Err(e) => {
             eprintln!("pbrlab-worker: cannot read the job on stdin: {e}");
@@ -200,6 +215,8 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
         }
     };
     drop(text);
+    // The reference libraries are read before the sandbox closes the file system.
+    let implementation = make(&job.implementation, &references);
     // Before any other thread exists and before any student code runs.
     let protections = sandbox::enter(&sandbox);
     {
@@ -223,7 +240,7 @@ pub fn serve<T: Tasks>(make: impl FnOnce(&ImplSpec) -> anyhow::Result<T>) -> ! {
         let _ = writeln!(out, "\n{line}");
         let _ = out.flush();
     };
-    let record = match make(&job.implementation) {
+    let record = match implementation {
         Ok(t) => run_job(&t, &job.kind, &mut progress),
         Err(e) => Record::Error {
             message: format!("{e:#}"),
@@ -250,13 +267,26 @@ pub fn serve_production() -> ! {
 }
 
 /// The implementation a production worker grades: the student's code for the tasks `spec`
-/// names over the reference, or the student's code alone in a build without the reference.
-pub fn production_impl(spec: &ImplSpec) -> anyhow::Result<crate::worksheet::TaskFns> {
-    match (crate::implementation::try_reference(), spec) {
-        (Some(_), spec) => Ok(crate::implementation::mixed(spec.student_tasks())),
-        (None, ImplSpec::Student) => Ok(*crate::implementation::student()),
-        (None, other) => Err(anyhow!(
-            "{other:?} needs the reference, which this build does not have (feature `solutions`)"
-        )),
+/// takes from the student, and for each other task the reference from its library in
+/// `references` ([`crate::compiled_reference::load`]). The worker links no reference of its
+/// own.
+pub fn production_impl(
+    spec: &ImplSpec,
+    references: &BTreeMap<String, PathBuf>,
+) -> anyhow::Result<crate::worksheet::TaskFns> {
+    let student = spec.student_tasks();
+    let mut table = *crate::implementation::student();
+    for task in TaskId::ALL.into_iter().filter(|t| !student.contains(*t)) {
+        let path = references.get(task.name()).ok_or_else(|| {
+            anyhow!(
+                "{spec:?} takes `{}` from the reference, and the grader gave no library \
+                 of it (a build without the reference?)",
+                task.name()
+            )
+        })?;
+        let library = crate::compiled_reference::load(path)?
+            .ok_or_else(|| anyhow!("the reference library {} is missing", path.display()))?;
+        table = table.with_task(&library, task);
     }
+    Ok(table)
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Gradescope runs this once, as root, when it builds the autograder's image: it installs the
-# Rust toolchain and builds the framework, the reference and a worker, so that grading a
-# submission later rebuilds only the student's crate, offline.
+# Rust toolchain and builds the framework, the reference, a worker and the reference's
+# one-task libraries the workers load, so that grading a submission later rebuilds only the
+# student's crate, offline.
 # PBRLAB_SKIP_TOOLCHAIN=1 skips the system packages and rustup (a machine that has them).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -16,3 +17,4 @@ fi
 [ -f "$HOME/.cargo/env" ] && source "$HOME/.cargo/env"
 cd "$source_dir"
 cargo build --release --locked --bins
+@REFERENCE_LIBRARIES@
