@@ -6,6 +6,7 @@
 //! (`students/<id>.json`), so an interrupted run continues where it stopped; the class
 //! table (`class.csv`) and summary (`summary.md`) are written from all results at the end.
 
+use super::regrade::StudentChange;
 use super::submission::{self, Intake};
 use crate::grade::credit::Credit;
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
@@ -68,6 +69,11 @@ pub struct ClassRun<'a> {
     pub credit: Credit,
     /// Show a progress bar.
     pub progress: bool,
+    /// Grade every submission again, not only those without a grade: the results replaced
+    /// go to `history/<seconds since 1970>/`, and `changes.md` (and `changes.json`) say
+    /// what changed ([`super::regrade`]). A new result that is not a grade keeps the saved
+    /// one.
+    pub regrade: bool,
 }
 
 /// The submissions in `dir`: each subfolder and zip file, by student name.
@@ -144,8 +150,10 @@ impl ClassRun<'_> {
         let todo: Vec<_> = all
             .iter()
             .filter(|(student, _)| {
-                self.saved_status(student)
-                    .is_none_or(|status| status == NOT_GRADED)
+                self.regrade
+                    || self
+                        .saved_status(student)
+                        .is_none_or(|status| status == NOT_GRADED)
             })
             .cloned()
             .collect();
@@ -188,6 +196,9 @@ impl ClassRun<'_> {
         let (tx, rx) = std::sync::mpsc::sync_channel::<Built>(self.parallel.max(1));
         let rx = std::sync::Mutex::new(rx);
         let failures = std::sync::Mutex::new(Vec::<String>::new());
+        let changes = std::sync::Mutex::new(Vec::<StudentChange>::new());
+        let history = self.history_folder();
+        let record = |result: &StudentResult| self.record(result, &history, &failures, &changes);
         std::thread::scope(|scope| {
             for _ in 0..self.parallel.max(1) {
                 scope.spawn(|| {
@@ -196,7 +207,7 @@ impl ClassRun<'_> {
                         let Some(built) = next else { break };
                         let student = built.student.clone();
                         let result = self.grade_built(built);
-                        self.save_noting(&result, &failures);
+                        record(&result);
                         bar.set_message(student);
                         bar.inc(1);
                     }
@@ -210,7 +221,7 @@ impl ClassRun<'_> {
                         }
                     }
                     Err(result) => {
-                        self.save_noting(&result, &failures);
+                        record(&result);
                         bar.inc(1);
                     }
                 }
@@ -223,8 +234,98 @@ impl ClassRun<'_> {
         if !failures.is_empty() {
             bail!("results could not be saved:\n{}", failures.join("\n"));
         }
+        if self.regrade {
+            let mut changes = changes.into_inner().unwrap_or_default();
+            changes.sort_by(|a, b| a.student.cmp(&b.student));
+            crate::atomic_file::write(
+                &self.out.join("changes.md"),
+                super::regrade::report(&changes).as_bytes(),
+            )?;
+            crate::atomic_file::write(
+                &self.out.join("changes.json"),
+                serde_json::to_string_pretty(&changes)?.as_bytes(),
+            )?;
+            for table in ["class.csv", "summary.md"] {
+                let from = self.out.join(table);
+                if from.is_file() {
+                    std::fs::create_dir_all(&history)?;
+                    std::fs::copy(&from, history.join(table))
+                        .with_context(|| format!("keeping {}", from.display()))?;
+                }
+            }
+        }
         self.write_tables(&all)?;
         Ok(per_submission)
+    }
+
+    /// Saves a new result. In a regrade, a saved result is first compared with it (the
+    /// change noted in `changes`) and moved to `history`, unless the new result is not a
+    /// grade: then the saved one stays.
+    fn record(
+        &self,
+        result: &StudentResult,
+        history: &Path,
+        failures: &std::sync::Mutex<Vec<String>>,
+        changes: &std::sync::Mutex<Vec<StudentChange>>,
+    ) {
+        if self.regrade
+            && let Some(saved) = self.saved(&result.student)
+        {
+            let change = super::regrade::compare(&saved, result);
+            let keep = change.kept.is_some();
+            if let Ok(mut changes) = changes.lock() {
+                changes.push(change);
+            }
+            if keep {
+                return;
+            }
+            if let Err(e) = self.archive(&result.student, history)
+                && let Ok(mut f) = failures.lock()
+            {
+                f.push(format!("{}: {e:#}", result.student));
+                return;
+            }
+        }
+        self.save_noting(result, failures);
+    }
+
+    /// Where this run keeps the results a regrade replaces: `history/<seconds since
+    /// 1970>/`, with `-2`, `-3`, … added when that folder exists.
+    fn history_folder(&self) -> PathBuf {
+        let seconds = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs());
+        let base = self.out.join("history").join(seconds.to_string());
+        std::iter::once(base.clone())
+            .chain((2..).map(|n| base.with_file_name(format!("{seconds}-{n}"))))
+            .find(|folder| !folder.exists())
+            .unwrap_or(base)
+    }
+
+    /// The saved result of `student`, if there is one that reads.
+    fn saved(&self, student: &str) -> Option<StudentResult> {
+        let text = std::fs::read_to_string(self.result_file(student)).ok()?;
+        serde_json::from_str(&text).ok()
+    }
+
+    /// Moves `student`'s saved result and feedback into `history/students/`.
+    fn archive(&self, student: &str, history: &Path) -> anyhow::Result<()> {
+        let file = self.result_file(student);
+        let to = history.join("students");
+        std::fs::create_dir_all(&to).with_context(|| format!("making {}", to.display()))?;
+        for from in [
+            file.clone(),
+            file.with_extension("txt"),
+            file.with_extension(""),
+        ] {
+            if from.exists()
+                && let Some(name) = from.file_name()
+            {
+                std::fs::rename(&from, to.join(name))
+                    .with_context(|| format!("moving {} to {}", from.display(), to.display()))?;
+            }
+        }
+        Ok(())
     }
 
     /// The status a saved result has, if there is one.
@@ -242,7 +343,10 @@ impl ClassRun<'_> {
         &self,
         stub: &dyn Fn(TaskId) -> anyhow::Result<String>,
     ) -> anyhow::Result<()> {
-        eprintln!("building the framework once before the first submission (no student's time)");
+        eprintln!(
+            "building the framework and the reference libraries once before the first \
+             submission (no student's time)"
+        );
         let scratch = tempfile::Builder::new()
             .prefix("pbrlab-class-stubs-")
             .tempdir()
@@ -265,6 +369,9 @@ impl ClassRun<'_> {
         }
         .run()
         .context("building the framework before grading (no submission was graded)")?;
+        // The reference's one-task libraries, which the workers load.
+        crate::grade::references::for_spec(&crate::grade::worker::ImplSpec::Reference)
+            .context("building the reference libraries before grading")?;
         Ok(())
     }
 

@@ -8,6 +8,7 @@
 pub mod class;
 pub mod config;
 pub mod package;
+pub mod regrade;
 pub mod run;
 pub mod schema;
 pub mod submission;

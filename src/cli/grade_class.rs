@@ -30,6 +30,12 @@ pub struct Args {
     /// Memory limit per task, in MiB.
     #[arg(long, default_value_t = 4096)]
     pub memory_limit_mb: u64,
+    /// Grade every submission again (a changed grader, a new hidden seed, late files):
+    /// the replaced results go to OUT/history/<time>/, and OUT/changes.md lists, per
+    /// student and task, old → new points and the checks whose verdict changed. A regrade
+    /// that fails for reasons not the student's keeps the saved grade.
+    #[arg(long)]
+    pub regrade: bool,
 }
 
 /// Runs `pbrlab grade-class`.
@@ -51,12 +57,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         memory_limit: args.memory_limit_mb << 20,
         credit: args.credit,
         progress: true,
+        regrade: args.regrade,
     }
     .run()?;
     eprintln!(
-        "{:.2} s per submission; results in {} (class.csv, summary.md, students/)",
+        "{:.2} s per submission; results in {} (class.csv, summary.md, students/{})",
         seconds,
-        args.out.display()
+        args.out.display(),
+        if args.regrade {
+            ", changes.md: what the regrade changed"
+        } else {
+            ""
+        }
     );
     Ok(())
 }

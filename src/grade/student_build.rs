@@ -6,6 +6,7 @@
 //! the binaries ([`BuildRecord`]); the grader reports each as a compile error with the
 //! compiler's message, and grades every other task as written.
 
+use super::sandbox::FileScope;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use serde::{Deserialize, Serialize};
@@ -104,6 +105,12 @@ pub const BOUNDS: Bounds = Bounds {
     wall: Duration::from_secs(90),
     file_size: 1 << 30,
 };
+
+/// The system's folders a bounded build reads: programs, libraries, settings, and the
+/// kernel's views of the process (cargo counts CPUs there).
+const SYSTEM_FOLDERS: &[&str] = &[
+    "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/etc", "/proc", "/sys", "/dev",
+];
 
 /// The most compiler output kept from one build, in bytes (beyond [`MAX_MESSAGE`] per task).
 const MAX_OUTPUT: usize = 64 << 10;
@@ -219,6 +226,38 @@ impl StudentBuild<'_> {
         Ok(())
     }
 
+    /// The file system of a bounded build: it reads the system's programs and libraries,
+    /// the toolchain and the registry, the workspace's sources and the exercise files, and
+    /// writes only its target folder (its temporary files go there too) and cargo's
+    /// package-cache lock files.
+    fn file_scope(&self, stubs: &Path, cargo: &mut Command) -> anyhow::Result<FileScope> {
+        let env_or_home = |key: &str, dir: &str| {
+            std::env::var_os(key)
+                .map(PathBuf::from)
+                .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(dir)))
+        };
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| self.root.join("target"));
+        let temporary = target.join("pbrlab-build-tmp");
+        std::fs::create_dir_all(&temporary)
+            .with_context(|| format!("creating {}", temporary.display()))?;
+        cargo.env("TMPDIR", &temporary);
+        let cargo_home = env_or_home("CARGO_HOME", ".cargo");
+        let mut readable: Vec<PathBuf> = SYSTEM_FOLDERS.iter().map(PathBuf::from).collect();
+        readable.extend([self.root.to_path_buf(), self.exercises.to_path_buf()]);
+        readable.push(stubs.to_path_buf());
+        readable.extend(cargo_home.clone());
+        readable.extend(env_or_home("RUSTUP_HOME", ".rustup"));
+        let locks: Vec<PathBuf> = cargo_home
+            .iter()
+            .flat_map(|home| {
+                [".package-cache", ".package-cache-mutate", ".global-cache"].map(|f| home.join(f))
+            })
+            .collect();
+        FileScope::new(&readable, &[target], &locks)
+    }
+
     /// Runs cargo once, reading its JSON messages; `left` of the build's `deadline`
     /// remains.
     fn cargo(
@@ -252,16 +291,18 @@ impl StudentBuild<'_> {
             use std::os::unix::process::CommandExt;
             cargo.process_group(0);
             if self.bounded {
-                // SAFETY: between fork and exec the closure only makes setrlimit calls,
-                // which are async-signal-safe and allocate nothing.
+                let scope = self.file_scope(stubs, &mut cargo)?;
+                // SAFETY: between fork and exec the closure only makes setrlimit, prctl and
+                // landlock_restrict_self calls, which are async-signal-safe, and allocates
+                // nothing (the Landlock domain was prepared before the fork).
                 unsafe {
-                    cargo.pre_exec(|| {
+                    cargo.pre_exec(move || {
                         use rlimit::Resource;
                         Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
                         Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
                         Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
                         Resource::CORE.set(0, 0)?;
-                        Ok(())
+                        scope.enter()
                     });
                 }
             }
