@@ -253,6 +253,25 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
 }
 
 #[test]
+fn the_handout_ships_the_lock_file_it_builds_with() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("student");
+    pbrlab::handout::write(root(), &dir).expect("handout written");
+    let lock = std::fs::read_to_string(dir.join("Cargo.lock")).unwrap();
+    assert!(
+        !lock.contains("pbrlab-solutions"),
+        "the reference's crate is left out"
+    );
+    // `--locked` refuses to build when the lock file would change.
+    let out = cargo(&dir, &["tree", "--locked", "--offline", "--quiet"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
 fn the_handout_refuses_a_non_empty_directory() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("x"), "x").unwrap();

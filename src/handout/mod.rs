@@ -49,10 +49,35 @@ pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
     }
     write_atomic(&dest_abs.join("Cargo.toml"), manifest.cargo_toml.as_bytes())?;
     write_atomic(&dest_abs.join("README.md"), README.as_bytes())?;
+    prune_lock_file(&dest_abs)?;
     written.push("Cargo.toml".into());
     written.push("README.md".into());
     written.sort();
     Ok(written)
+}
+
+/// Brings the copied `Cargo.lock` in line with the handout's workspace (which lacks the
+/// reference's crates), with the same versions of everything else, so that the student's
+/// first build does not rewrite it: `cargo update --workspace` resolves offline against
+/// the lock and changes only the workspace's own entries.
+fn prune_lock_file(handout: &Path) -> anyhow::Result<()> {
+    if !handout.join("Cargo.lock").is_file() {
+        return Ok(());
+    }
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let output = std::process::Command::new(&cargo)
+        .current_dir(handout)
+        .args(["update", "--workspace", "--offline", "--quiet"])
+        .env_remove("CARGO_TARGET_DIR")
+        .output()
+        .with_context(|| format!("running {}", cargo.to_string_lossy()))?;
+    if !output.status.success() {
+        bail!(
+            "updating the handout's Cargo.lock: {}",
+            String::from_utf8_lossy(&output.stderr).trim()
+        );
+    }
+    Ok(())
 }
 
 /// The committed stub when `file` is a task's exercise file (`exercises/<task>.rs`) and git
