@@ -1,7 +1,8 @@
-//! The reference in compiled form, for the student handout: a shared library
-//! (`tools/reference/`, built by `pbrlab handout` from `tools/reference-library/`) that
-//! the handout's binaries load, so `render --impl mixed` takes the reference for the tasks a
-//! student has not written, without the reference's source.
+//! The reference in compiled form: shared libraries built from `tools/reference-library/`.
+//! The whole reference goes into the student handout (`tools/reference/`, written by
+//! `pbrlab handout`), whose binaries load it, so `render --impl mixed` takes the reference for
+//! the tasks a student has not written, without the reference's source. One library per task
+//! is what the grader's workers load ([`crate::grade::references`]).
 //!
 //! The library holds its own copy of this framework, and the handout's binaries hand it
 //! their scenes, samplers and task tables by reference, in Rust's own calling convention.
@@ -12,9 +13,9 @@
 //! whose signature is not this build's, saying what differs. Two C functions cross before
 //! the check: [`ABI_SYMBOL`] and [`TASKS_SYMBOL`].
 //!
-//! Limits of the shared copy, all harmless to a render: the library counts its rays in its
-//! own counter, so a mixed render's rays-per-second leaves out the rays the reference casts;
-//! and a panic inside the library's code cannot be caught by this build's (another copy of
+//! The library counts the rays its code casts in its own counter, which it exports
+//! ([`RAYS_SYMBOL`]) and this build adds to its own. A limit of the shared copy, harmless to
+//! a render: a panic inside the library's code cannot be caught by this build's (another copy of
 //! the standard library), so it ends the process. The reference does not panic on a scene
 //! that loaded.
 
@@ -31,6 +32,24 @@ pub const ABI_SYMBOL: &[u8] = b"pbrlab_reference_abi";
 /// The exported C function that returns a pointer to the library's [`TaskFns`] (the
 /// reference's table); read only after the signatures agree.
 pub const TASKS_SYMBOL: &[u8] = b"pbrlab_reference_tasks";
+
+/// The exported C function that returns the rays the calling thread cast in the library's
+/// code since the last call: the library's copy of the framework counts them in its own
+/// counter, which [`take_library_rays`] adds to this build's.
+pub const RAYS_SYMBOL: &[u8] = b"pbrlab_reference_take_rays";
+
+/// The ray counters of the libraries loaded in this process.
+static RAY_COUNTERS: std::sync::Mutex<Vec<extern "C" fn() -> u64>> =
+    std::sync::Mutex::new(Vec::new());
+
+/// The rays the calling thread cast in loaded libraries' code since the last call (see
+/// [`crate::scene::take_ray_count`], which adds them).
+pub fn take_library_rays() -> u64 {
+    RAY_COUNTERS
+        .lock()
+        .map(|counters| counters.iter().map(|take| take()).sum())
+        .unwrap_or(0)
+}
 
 /// The library's file name on this platform (`libpbrlab_reference.so` on Linux).
 pub fn file_name() -> String {
@@ -83,6 +102,13 @@ macro_rules! reference_library {
         pub extern "C" fn pbrlab_reference_tasks() -> *const std::ffi::c_void {
             static TABLE: $crate::worksheet::TaskFns = $table;
             (&raw const TABLE).cast()
+        }
+
+        /// [`pbrlab::compiled_reference::RAYS_SYMBOL`]: the rays the calling thread cast
+        /// in the library's code since the last call (its own copy of the counter).
+        #[unsafe(no_mangle)]
+        pub extern "C" fn pbrlab_reference_take_rays() -> u64 {
+            $crate::scene::take_ray_count()
         }
     };
 }
@@ -190,6 +216,19 @@ pub fn load(path: &Path) -> anyhow::Result<Option<TaskFns>> {
             .with_context(|| format!("{} has no task table", path.display()))?;
         *tasks().cast::<TaskFns>()
     };
+    // SAFETY: the signatures agree, so the symbol is the macro's `extern "C" fn() -> u64`;
+    // the library stays loaded, so the pointer stays valid.
+    if let Ok(take) = unsafe { library.get::<extern "C" fn() -> u64>(RAYS_SYMBOL) }
+        && let Ok(mut counters) = RAY_COUNTERS.lock()
+    {
+        let take = *take;
+        if !counters
+            .iter()
+            .any(|known| std::ptr::fn_addr_eq(*known, take))
+        {
+            counters.push(take);
+        }
+    }
     std::mem::forget(library);
     Ok(Some(table))
 }

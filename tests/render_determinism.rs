@@ -197,3 +197,27 @@ fn render_resume_after_a_kill_gives_the_uninterrupted_image() {
         "killed at {at_kill} spp"
     );
 }
+
+#[test]
+fn a_render_counts_the_rays_cast_in_a_reference_library() {
+    use pbrlab::grade::worker::ImplSpec;
+    use pbrlab::worksheet::TaskId;
+    let scene = small_cornell(2);
+    let options = RenderOptions {
+        spp: 2,
+        seed: 3,
+        progress: false,
+        time_limit: None,
+        on_pass: None,
+    };
+    let linked = render(&scene, &Reference, &options).stats.rays;
+    assert!(linked > 0);
+    // The same render with path_trace from its library, which counts in its own copy of
+    // the framework.
+    let libraries = pbrlab::grade::references::for_spec(&ImplSpec::Reference).unwrap();
+    let library = pbrlab::compiled_reference::load(&libraries["path_trace"])
+        .unwrap()
+        .expect("the path_trace library");
+    let mixed = Reference.with_task(&library, TaskId::PathTrace);
+    assert_eq!(render(&scene, &mixed, &options).stats.rays, linked);
+}

@@ -77,9 +77,10 @@ thread_local! {
 }
 
 /// Rays this thread has cast through [`Scene::intersect`] and [`Scene::occluded`] since the
-/// last call; resets the count.
+/// last call, in this build's code and in the reference libraries it loaded
+/// ([`crate::compiled_reference::take_library_rays`]); resets the count.
 pub fn take_ray_count() -> u64 {
-    RAYS.with(|c| c.replace(0))
+    RAYS.with(|c| c.replace(0)) + crate::compiled_reference::take_library_rays()
 }
 
 #[inline]
