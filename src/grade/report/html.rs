@@ -6,7 +6,9 @@
 
 use super::svg;
 use crate::grade::output::fmt_num;
-use crate::grade::verdict::{CheckResult, Detail, GradeReport, TaskStatus, Visibility};
+use crate::grade::verdict::{
+    CheckResult, Detail, GradeReport, TaskOutcome, TaskStatus, Visibility,
+};
 use anyhow::Context;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -183,6 +185,15 @@ fn check_html(c: &CheckResult, pictures: &Pictures<'_>) -> String {
     s
 }
 
+/// True for an entry the page shows in one line rather than a section: a task not
+/// attempted yet, a scene waiting for the tasks it calls.
+fn folded(t: &TaskOutcome) -> bool {
+    matches!(
+        t.status,
+        TaskStatus::NotAttempted | TaskStatus::NeedsTask { .. }
+    )
+}
+
 /// The page for `report`, with the pictures of render checks read from `dir` (the report
 /// folder they were written to) and embedded.
 pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
@@ -199,10 +210,15 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
         } else {
             "failed"
         };
+        let name = if folded(t) {
+            t.task.clone()
+        } else {
+            format!("<a href=\"#{0}\">{0}</a>", t.task)
+        };
         let _ = write!(
             s,
-            "<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{class}\">{1}</td><td>{2:.1}/{3}</td><td>{4:.2} s</td></tr>",
-            t.task,
+            "<tr><td>{0}</td><td class=\"{class}\">{1}</td><td>{2:.1}/{3}</td><td>{4:.2} s</td></tr>",
+            name,
             escape(&t.status.label()),
             t.points,
             t.max_points,
@@ -210,7 +226,41 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
         );
     }
     s += "</table>";
-    for t in &report.tasks {
+    // Not-attempted tasks and scenes still waiting for tasks are one line each; the other
+    // entries get a section, those that need work first.
+    let untouched: Vec<&str> = report
+        .tasks
+        .iter()
+        .filter(|t| t.status == TaskStatus::NotAttempted)
+        .map(|t| t.task.as_str())
+        .collect();
+    if !untouched.is_empty() {
+        let _ = write!(
+            s,
+            "<p class=\"muted\">Not attempted yet (each still stops at <code>todo!()</code>): {}.</p>",
+            escape(&untouched.join(", "))
+        );
+    }
+    let waiting: Vec<String> = report
+        .tasks
+        .iter()
+        .filter_map(|t| match &t.status {
+            TaskStatus::NeedsTask { task } => {
+                Some(format!("{} ({task})", t.task.trim_start_matches("scene: ")))
+            }
+            _ => None,
+        })
+        .collect();
+    if !waiting.is_empty() {
+        let _ = write!(
+            s,
+            "<p class=\"muted\">Scenes are graded once the tasks they call pass: {}.</p>",
+            escape(&waiting.join("; "))
+        );
+    }
+    let mut shown: Vec<&TaskOutcome> = report.tasks.iter().filter(|t| !folded(t)).collect();
+    shown.sort_by_key(|t| matches!(t.status, TaskStatus::Passed | TaskStatus::NoChecks));
+    for t in shown {
         let _ = write!(
             s,
             "<section id=\"{0}\"><h2>{0}: {1} ({2:.1}/{3})</h2>",
@@ -255,4 +305,55 @@ pub fn write_html(report: &GradeReport, dir: &Path) -> anyhow::Result<PathBuf> {
     let path = dir.join("index.html");
     crate::atomic_file::write(&path, page(report, Some(dir)).as_bytes())?;
     Ok(path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn entry(task: &str, status: TaskStatus) -> TaskOutcome {
+        TaskOutcome {
+            task: task.into(),
+            status,
+            points: 0.0,
+            max_points: 5.0,
+            checks: Vec::new(),
+            output: String::new(),
+            seconds: 0.0,
+        }
+    }
+
+    #[test]
+    fn untouched_tasks_and_waiting_scenes_are_one_line_and_failures_come_first() {
+        let tasks = vec![
+            entry("reflect", TaskStatus::Passed),
+            entry("smith_g1", TaskStatus::Failed),
+            entry("phong", TaskStatus::NotAttempted),
+            entry("kajiya_kay", TaskStatus::NotAttempted),
+            entry(
+                "scene: smoke",
+                TaskStatus::NeedsTask {
+                    task: "delta_tracking".into(),
+                },
+            ),
+        ];
+        let page = page(&GradeReport::new("student", 1, false, tasks, 1.0), None);
+        assert!(page.contains("Not attempted yet"), "{page}");
+        assert!(page.contains("phong, kajiya_kay."), "{page}");
+        assert!(page.contains("smoke (delta_tracking)"), "{page}");
+        for folded in ["phong", "kajiya_kay", "scene: smoke"] {
+            assert!(
+                !page.contains(&format!("<section id=\"{folded}\"")),
+                "{folded}"
+            );
+            assert!(!page.contains(&format!("href=\"#{folded}\"")), "{folded}");
+        }
+        let failed = page
+            .find("<section id=\"smith_g1\"")
+            .expect("a failed task's section");
+        let passed = page
+            .find("<section id=\"reflect\"")
+            .expect("a passed task's section");
+        assert!(failed < passed, "failures first");
+    }
 }
