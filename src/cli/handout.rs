@@ -35,7 +35,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let root = crate::repository_root();
     let files = handout::write(root, &args.dir)?;
     if !args.without_reference {
-        eprintln!("Compiling the reference into a shared library for mixed renders…");
+        eprintln!(
+            "Compiling the reference into a shared library for mixed renders (a second \
+             compile of the framework, without the reference: minutes on two cores; cargo \
+             shows its progress)…"
+        );
         let library = handout::compiled_reference::build(root, &args.dir)?;
         eprintln!("Wrote {}", library.display());
     }

@@ -18,14 +18,7 @@ pub fn build(root: &Path, dest: &Path) -> anyhow::Result<PathBuf> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let status = Command::new(&cargo)
         .current_dir(root)
-        .args([
-            "rustc",
-            "--release",
-            "--quiet",
-            "-p",
-            "pbrlab-reference",
-            "--lib",
-        ])
+        .args(["rustc", "--release", "-p", "pbrlab-reference", "--lib"])
         .args(["--", "-C", "strip=symbols"])
         .env("CARGO_TARGET_DIR", &target)
         .status()
