@@ -639,6 +639,47 @@ pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
             common.replace('|', "/")
         );
     }
+    s += &item_analysis(&graded, entries);
+    s
+}
+
+/// Per entry and per check, how many of the submissions that ran the check passed it (a
+/// task not attempted, not compiled or crashed before the check ran does not count), the
+/// hardest checks first within each entry.
+fn item_analysis(graded: &[&GradeReport], entries: &[String]) -> String {
+    let mut s = String::from(
+        "\n## Checks\n\nPer check, of the submissions that ran it: how many passed.\n\n\
+         | entry | check | passed | ran | pass rate |\n|---|---|---|---|---|\n",
+    );
+    for e in entries {
+        let mut checks: BTreeMap<&str, (usize, usize)> = BTreeMap::new();
+        for outcome in graded.iter().filter_map(|g| g.task(e)) {
+            if matches!(
+                outcome.status,
+                TaskStatus::NotAttempted | TaskStatus::NeedsTask { .. }
+            ) {
+                continue;
+            }
+            for c in &outcome.checks {
+                let (passed, ran) = checks.entry(c.name.as_str()).or_default();
+                *ran += 1;
+                *passed += usize::from(c.passed);
+            }
+        }
+        let mut rows: Vec<_> = checks.into_iter().collect();
+        rows.sort_by(|a, b| {
+            let rate = |(passed, ran): (usize, usize)| passed as f64 / ran as f64;
+            rate(a.1).total_cmp(&rate(b.1)).then(a.0.cmp(b.0))
+        });
+        for (check, (passed, ran)) in rows {
+            let _ = writeln!(
+                s,
+                "| {e} | {} | {passed} | {ran} | {:.0} % |",
+                check.replace('|', "/"),
+                100.0 * passed as f64 / ran as f64
+            );
+        }
+    }
     s
 }
 
@@ -662,6 +703,40 @@ mod tests {
         std::fs::create_dir(dir.path().join("alice")).unwrap();
         assert!(submissions(dir.path()).is_err(), "alice twice");
         assert_eq!(file_name("a/b c"), "a_b_c");
+    }
+
+    #[test]
+    fn the_check_table_counts_the_submissions_that_ran_each_check_hardest_first() {
+        use crate::grade::verdict::{CheckKind, CheckResult, TaskOutcome};
+        let report = |status: TaskStatus, values: bool| {
+            let check = |name: &str, passed: bool| {
+                let mut c = CheckResult::new(name, CheckKind::Values);
+                c.passed = passed;
+                c
+            };
+            let task = TaskOutcome {
+                task: "smith_g1".into(),
+                status,
+                points: 0.0,
+                max_points: 6.0,
+                checks: vec![check("values", values), check("stability", false)],
+                output: String::new(),
+                seconds: 0.0,
+            };
+            GradeReport::new("student", 1, false, vec![task], 1.0)
+        };
+        let reports = [
+            report(TaskStatus::Failed, true),
+            report(TaskStatus::Failed, false),
+            // Never ran: not counted.
+            report(TaskStatus::NotAttempted, false),
+        ];
+        let graded: Vec<&GradeReport> = reports.iter().collect();
+        let text = item_analysis(&graded, &["smith_g1".to_string()]);
+        let stability = text.find("| smith_g1 | stability | 0 | 2 | 0 % |");
+        let values = text.find("| smith_g1 | values | 1 | 2 | 50 % |");
+        assert!(stability.is_some() && values.is_some(), "{text}");
+        assert!(stability < values, "hardest first: {text}");
     }
 
     #[test]
