@@ -53,23 +53,17 @@ pub fn take_library_rays() -> u64 {
 
 /// The library's file name on this platform (`libpbrlab_reference.so` on Linux).
 pub fn file_name() -> String {
-    library_file("pbrlab_reference")
-}
-
-/// The file name of the library that holds `task`'s reference and nothing else of the
-/// reference (`libpbrlab_reference_smith_g1.so` on Linux): an example of
-/// `tools/reference-library/`, which the grader's workers load ([`crate::grade::references`]).
-pub fn task_file_name(task: crate::worksheet::TaskId) -> String {
-    library_file(&format!("pbrlab_reference_{}", task.name()))
-}
-
-fn library_file(stem: &str) -> String {
     format!(
-        "{}{stem}{}",
+        "{}pbrlab_reference{}",
         std::env::consts::DLL_PREFIX,
         std::env::consts::DLL_SUFFIX
     )
 }
+
+/// The start of the name of each one-task library, followed by the task's id
+/// (`pbrlab_reference_smith_g1`): the examples of `tools/reference-library/`, which the
+/// grader's workers load ([`crate::grade::references`]).
+pub const TASK_LIBRARY_PREFIX: &str = "pbrlab_reference_";
 
 /// Defines the two C functions of a reference library ([`ABI_SYMBOL`], [`TASKS_SYMBOL`]),
 /// the table being `$table`, a constant expression of type

@@ -126,7 +126,7 @@ fn build() -> anyhow::Result<BTreeMap<TaskId, PathBuf>> {
         }
         let name = message["target"]["name"].as_str().unwrap_or_default();
         let Some(task) = name
-            .strip_prefix("pbrlab_reference_")
+            .strip_prefix(crate::compiled_reference::TASK_LIBRARY_PREFIX)
             .and_then(|t| TaskId::parse(t).ok())
         else {
             continue;

@@ -276,6 +276,8 @@ pub fn production_impl(
 ) -> anyhow::Result<crate::worksheet::TaskFns> {
     let student = spec.student_tasks();
     let mut table = *crate::implementation::student();
+    // Each library once, though the handout's one library holds every task.
+    let mut loaded: BTreeMap<&PathBuf, crate::worksheet::TaskFns> = BTreeMap::new();
     for task in TaskId::ALL.into_iter().filter(|t| !student.contains(*t)) {
         let path = references.get(task.name()).ok_or_else(|| {
             anyhow!(
@@ -284,8 +286,15 @@ pub fn production_impl(
                 task.name()
             )
         })?;
-        let library = crate::compiled_reference::load(path)?
-            .ok_or_else(|| anyhow!("the reference library {} is missing", path.display()))?;
+        let library = match loaded.get(path) {
+            Some(library) => *library,
+            None => {
+                let library = crate::compiled_reference::load(path)?.ok_or_else(|| {
+                    anyhow!("the reference library {} is missing", path.display())
+                })?;
+                *loaded.entry(path).or_insert(library)
+            }
+        };
         table = table.with_task(&library, task);
     }
     Ok(table)
