@@ -218,7 +218,9 @@ fn failure_messages_name_the_case_input_and_cause() {
     let (_, _, checks) = grade(&w.patch, task, &inputs[&task]);
     let text = messages(&checks);
     assert!(
-        text.contains("fresnel_schlick(cos=0.766, 1.5→1): got 0.04067, expected 0.2456 (dense→less dense: use cos θt)"),
+        text.contains(
+            "fresnel_schlick(cos=0.76604444, 1.5→1.0): got 0.04067, expected 0.2456 (dense→less dense: use cos θt)"
+        ),
         "{text}"
     );
     let factor_4 = wrong::catalogue()

@@ -13,7 +13,8 @@
 //! [`calibration`] how often they fail correct code.
 //!
 //! # Data
-//! [`catalogue`] says which inputs each task is graded on; [`expected`] stores the
+//! [`catalogue`] says which inputs each task is graded on, drawn from each task's declared
+//! [`domain`] with a bias toward its boundaries; [`expected`] stores the
 //! reference's answers (insta snapshots embedded at build time), so the handout grades
 //! without solutions. [`checks`] runs a task's checks on any implementation.
 //!
@@ -28,6 +29,7 @@ pub mod case;
 pub mod catalogue;
 pub mod checks;
 pub mod credit;
+pub mod domain;
 pub mod estimator;
 pub mod expected;
 pub mod history;

@@ -53,6 +53,33 @@ impl Output {
             _ => None,
         }
     }
+
+    /// The largest difference between corresponding numbers of two outputs of the same
+    /// shape; `None` when the shapes differ (`None` against a value, lists of other
+    /// lengths, other fields) or a number is finite in one and not the other.
+    pub fn max_difference(&self, other: &Output) -> Option<f64> {
+        let pair = |a: f64, b: f64| match (a.is_finite(), b.is_finite()) {
+            (true, true) => Some((a - b).abs()),
+            (false, false) if a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()) => Some(0.0),
+            _ => None,
+        };
+        match (self, other) {
+            (Output::Nothing, Output::Nothing) => Some(0.0),
+            (Output::Number(a), Output::Number(b)) => pair(*a, *b),
+            (Output::Numbers(a), Output::Numbers(b)) if a.len() == b.len() => a
+                .iter()
+                .zip(b)
+                .try_fold(0f64, |m, (a, b)| Some(m.max(pair(*a, *b)?))),
+            (Output::Record(a), Output::Record(b))
+                if a.len() == b.len() && a.keys().eq(b.keys()) =>
+            {
+                a.values()
+                    .zip(b.values())
+                    .try_fold(0f64, |m, (a, b)| Some(m.max(a.max_difference(b)?)))
+            }
+            _ => None,
+        }
+    }
 }
 
 /// Widens an f32 through its shortest decimal form, so that 0.1f32 is stored as 0.1 and not

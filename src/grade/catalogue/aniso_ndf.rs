@@ -1,8 +1,8 @@
 //! Cases of `aniso_ndf`, and its normalisation as an estimator.
 
-use super::random::{roughness, upper};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
+use crate::grade::domain::{Draw, Param, anisotropy, cos_z, cosine, ratio, roughness};
 use crate::grade::power::Declared;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
@@ -56,12 +56,48 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+fn of(c: &Call) -> Option<(Vec3, f32, f32)> {
+    match c {
+        Call::AnisoNdf {
+            h,
+            alpha_x,
+            alpha_y,
+        } => Some((*h, *alpha_x, *alpha_y)),
+        _ => None,
+    }
+}
+
+/// The declared domain of `aniso_ndf(h, alpha_x, alpha_y)`: a unit local `h` anywhere (0 at
+/// or below the horizon), roughnesses from 0 (raised to `MIN_ALPHA`, finite) to 1, the
+/// text's traps `1e-3` and `1e-4` among them.
+pub const DOMAIN: &[Param] = &[
+    cosine("aniso_ndf", "cos θh", &["h"], |c| {
+        of(c).map(|x| cos_z(x.0))
+    }),
+    roughness("aniso_ndf", "alpha_x", &["alpha_x"], |c| {
+        of(c).map(|x| x.1 as f64)
+    })
+    .special(ALPHA_TRAPS),
+    roughness("aniso_ndf", "alpha_y", &["alpha_y"], |c| {
+        of(c).map(|x| x.2 as f64)
+    })
+    .special(ALPHA_TRAPS),
+    anisotropy("aniso_ndf", &["alpha_x", "alpha_y"], |c| {
+        of(c).and_then(|x| ratio(x.1, x.2))
+    }),
+];
+
+/// Roughnesses the text names: 0, the f32 traps of the textbook form, and 1 (`D = 1/π`).
+const ALPHA_TRAPS: &[f64] = &[0.0, 1e-4, 1e-3, 1.0];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
-        .map(|i| {
-            // Half near the normal, where D is large, half anywhere.
-            let h = upper(s, if i % 2 == 0 { 0.8 } else { 0.0 });
-            ndf("", h, roughness(s, 0.05, 1.0), roughness(s, 0.05, 1.0))
+        .map(|_| {
+            let cos = d.value(&DOMAIN[0]);
+            let h = d.direction_at(Vec3::Z, cos);
+            let (ax, ay) = d.alpha_pair(&DOMAIN[1], &DOMAIN[3]);
+            ndf("", h, ax, ay)
         })
         .collect()
 }

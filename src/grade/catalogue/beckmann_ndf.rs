@@ -1,8 +1,8 @@
 //! Cases of `beckmann_ndf`, and its normalisation as an estimator.
 
-use super::random::{roughness, upper};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
+use crate::grade::domain::{Draw, Param, cos_z, cosine, roughness};
 use crate::grade::power::Declared;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
@@ -36,11 +36,34 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+fn of(c: &Call) -> Option<(Vec3, f32)> {
+    match c {
+        Call::BeckmannNdf { h, alpha } => Some((*h, *alpha)),
+        _ => None,
+    }
+}
+
+/// The declared domain of `beckmann_ndf(h, alpha)`: a unit local `h` anywhere (0 at or
+/// below the horizon, and where `cos⁴θh` underflows near `cos θh = 1e-12`), a roughness from
+/// 0 (raised to `MIN_ALPHA`) to 1.
+pub const DOMAIN: &[Param] = &[
+    cosine("beckmann_ndf", "cos θh", &["h"], |c| {
+        of(c).map(|x| cos_z(x.0))
+    })
+    .special(&[1e-12]),
+    roughness("beckmann_ndf", "alpha", &["alpha"], |c| {
+        of(c).map(|x| x.1 as f64)
+    }),
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
-        .map(|i| {
-            let h = upper(s, if i % 2 == 0 { 0.8 } else { 0.0 });
-            ndf("", h, roughness(s, 0.05, 1.0))
+        .map(|_| {
+            let cos = d.value(&DOMAIN[0]);
+            let h = d.direction_at(Vec3::Z, cos);
+            let alpha = d.value(&DOMAIN[1]) as f32;
+            ndf("", h, alpha)
         })
         .collect()
 }

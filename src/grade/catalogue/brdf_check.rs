@@ -1,9 +1,9 @@
 //! Cases of `brdf_check`: BRDFs whose plausibility is known, judged by the three verdicts.
 
 use super::CaseInput;
-use super::random::range;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
+use crate::grade::domain::{Draw, Param};
 use crate::grade::test_brdf::TestBrdf;
 use crate::sampling::Sampler;
 use std::f32::consts::TAU;
@@ -70,21 +70,58 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+/// The declared domain of `brdf_check(brdf, sampler, samples)`: any BRDF closure over
+/// local directions (one that returns NaN, ∞ or negative values included), among them a
+/// Lambertian with albedo up to exactly 1, which must not look like it creates energy.
+/// Judged by verdicts, so no output field is compared to the last digit.
+pub const DOMAIN: &[Param] = &[
+    Param::new(
+        "brdf_check",
+        "Lambertian albedo",
+        &["brdf", "seed"],
+        |c| match c {
+            Call::BrdfCheck {
+                brdf: TestBrdf::Lambert { albedo },
+                ..
+            } => Some(*albedo as f64),
+            _ => None,
+        },
+        0.05,
+        1.0,
+    )
+    .special(&[1.0]),
+    Param::new(
+        "brdf_check",
+        "samples",
+        &["samples"],
+        |c| match c {
+            Call::BrdfCheck { samples, .. } => Some(*samples as f64),
+            _ => None,
+        },
+        1.0,
+        1e6,
+    ),
+];
+
+/// Random checks per grading at most: each draws 20 000 samples per measurement.
+const RANDOM_CHECKS: usize = 4;
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
-    (0..count.min(4))
+    let mut d = Draw::new(s);
+    (0..count.min(RANDOM_CHECKS))
         .map(|i| {
-            let seed = (s.next_f64() * 1e9) as u64;
+            let seed = (d.unit() * 1e9) as u64;
             match i {
                 0 => check(
                     "Lambert",
                     TestBrdf::Lambert {
-                        albedo: range(s, 0.1, 0.7),
+                        albedo: d.value(&DOMAIN[0]) as f32,
                     },
                     seed,
                     LAMBERT_ALBEDO,
                 ),
                 1 => {
-                    let n = if s.next_1d() < 0.5 { 2 } else { 4 };
+                    let n = if d.unit() < 0.5 { 2 } else { 4 };
                     check(
                         "k (wi·wo)^n / (cos θi cos θo), k = (n+1)/(2π)",
                         TestBrdf::CosinePower {

@@ -1,9 +1,9 @@
 //! Cases of `cosine_pdf`, and the irradiance estimator built on `cosine_sample`.
 
 use super::polygon::{hits_rectangle, projected_solid_angle};
-use super::random::upper;
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
+use crate::grade::domain::{COS_BOUNDARIES, Draw, Param, Spread, cos_z};
 use crate::grade::power::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
@@ -28,11 +28,30 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+/// The declared domain of `cosine_pdf(w)`: any unit direction, 0 below the horizon.
+pub const DOMAIN: &[Param] = &[Param {
+    function: "cosine_pdf",
+    name: "cos θ of w",
+    covers: &["w"],
+    value: |c| match c {
+        Call::CosinePdf { w } => Some(cos_z(*w)),
+        _ => None,
+    },
+    lo: -1.0,
+    hi: 1.0,
+    spread: Spread::Linear,
+    boundaries: COS_BOUNDARIES,
+    special: &[],
+    resolution: 1e-7,
+    on_boundaries: true,
+}];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
-        .map(|i| {
-            let w = upper(s, 0.0);
-            let w = if i % 6 == 5 { -w } else { w };
+        .map(|_| {
+            let cos = d.value(&DOMAIN[0]);
+            let w = d.direction_at(Vec3::Z, cos);
             CaseInput::new("", Call::CosinePdf { w }).note(PDF)
         })
         .collect()

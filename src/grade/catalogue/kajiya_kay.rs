@@ -1,9 +1,9 @@
 //! Cases of `kajiya_kay`.
 
 use super::CaseInput;
-use super::random::{colour, range, sphere};
 use crate::bsdf::KajiyaKayParams;
 use crate::grade::call::Call;
+use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -67,18 +67,128 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+fn of(c: &Call) -> Option<(Vec3, Vec3, Vec3, &KajiyaKayParams)> {
+    match c {
+        Call::KajiyaKay {
+            wo,
+            wi,
+            tangent,
+            params,
+        } => Some((*wo, *wi, *tangent, params)),
+        _ => None,
+    }
+}
+
+/// The boundaries of a cosine to the fibre: along it, either way (`sin θ = 0`, where the
+/// worksheet's form divides by 0 and a rounded `t·w` may be 1.0000001).
+const ALONG_THE_FIBRE: &[Boundary] = &[
+    Boundary {
+        at: 1.0,
+        what: "along the fibre",
+    },
+    Boundary {
+        at: -1.0,
+        what: "along the fibre, backwards",
+    },
+];
+
+/// The declared domain of `kajiya_kay(wo, wi, tangent, params)`: unit directions on the
+/// whole sphere, pointing away from the fibre, a unit tangent; non-negative and finite for
+/// every input, also along the fibre; channels of `kd` and `ks` in [0, 1] and an exponent
+/// ≥ 0 that need not be an integer (0 gives the clamped `0^0 = 1`).
+pub const DOMAIN: &[Param] = &[
+    Param::new(
+        "kajiya_kay",
+        "t·wi",
+        &["wi", "tangent"],
+        |c| of(c).map(|x| cos_between(x.2, x.1)),
+        -1.0,
+        1.0,
+    )
+    .boundaries(ALONG_THE_FIBRE),
+    Param::new(
+        "kajiya_kay",
+        "t·wo",
+        &["wo", "tangent"],
+        |c| of(c).map(|x| cos_between(x.2, x.0)),
+        -1.0,
+        1.0,
+    )
+    .boundaries(ALONG_THE_FIBRE),
+    Param::new(
+        "kajiya_kay",
+        "t·wo + t·wi",
+        &["wo", "wi"],
+        |c| of(c).map(|x| cos_between(x.2, x.0) + cos_between(x.2, x.1)),
+        -2.0,
+        2.0,
+    )
+    .boundaries(&[Boundary {
+        at: 0.0,
+        what: "the reflection cone (t·wo = −t·wi)",
+    }]),
+    Param::new(
+        "kajiya_kay",
+        "largest channel of kd",
+        &["params.kd"],
+        |c| of(c).map(|x| x.3.kd.max_element() as f64),
+        0.0,
+        1.0,
+    )
+    .special(&[0.0, 1.0]),
+    Param::new(
+        "kajiya_kay",
+        "largest channel of ks",
+        &["params.ks"],
+        |c| of(c).map(|x| x.3.ks.max_element() as f64),
+        0.0,
+        1.0,
+    )
+    .special(&[0.0, 1.0]),
+    Param::new(
+        "kajiya_kay",
+        "exponent",
+        &["params.exponent"],
+        |c| of(c).map(|x| x.3.exponent as f64),
+        0.0,
+        1000.0,
+    )
+    .spread(Spread::Log {
+        from: 1.0,
+        to: 200.0,
+    })
+    .boundaries(&[Boundary {
+        at: 0.0,
+        what: "p = 0 (the clamped 0^0 is 1)",
+    }])
+    .special(&[1.0, 80.0, 80.5])
+    .resolution(1e-6)
+    .open(),
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
-        .map(|_| {
+        .map(|i| {
+            let tangent = d.sphere();
+            let cos_i = d.value(&DOMAIN[0]);
+            let wi = d.direction_at(tangent, cos_i);
+            // One case in four aims wo at the reflection cone.
+            let cos_o = if i % 4 == 1 {
+                (d.value(&DOMAIN[2]) - cos_i).clamp(-1.0, 1.0)
+            } else {
+                d.value(&DOMAIN[1])
+            };
+            let wo = d.direction_at(tangent, cos_o);
             let params = KajiyaKayParams {
-                kd: colour(s, 0.0, 0.5),
-                ks: colour(s, 0.0, 1.0),
-                exponent: range(s, 1.0, 100.0),
+                kd: d.colour(&DOMAIN[3]),
+                ks: d.colour(&DOMAIN[4]),
+                exponent: d.value(&DOMAIN[5]) as f32,
             };
             let call = Call::KajiyaKay {
-                wo: sphere(s),
-                wi: sphere(s),
-                tangent: sphere(s),
+                wo,
+                wi,
+                tangent,
                 params,
             };
             CaseInput::new("", call).note(KK)

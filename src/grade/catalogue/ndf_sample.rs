@@ -3,9 +3,11 @@
 
 use super::cosine_sample::{QUAD_X, QUAD_Y, QUAD_Z, quad};
 use super::polygon::{hits_rectangle, projected_solid_angle};
-use super::random::{roughness, upper};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::{Call, SampleCall};
+use crate::grade::domain::{
+    Boundary, Draw, Param, anisotropy, cos_between, cos_z, cosine, ratio, roughness,
+};
 use crate::grade::power::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
@@ -68,16 +70,67 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
+    match c {
+        Call::NdfPdf {
+            wo,
+            wi,
+            alpha_x,
+            alpha_y,
+        } => Some((*wo, *wi, *alpha_x, *alpha_y)),
+        _ => None,
+    }
+}
+
+/// The declared domain of `ndf_pdf(wo, wi, alpha_x, alpha_y)`: finite and non-negative for
+/// every input: unit local directions anywhere (0 where the sampler cannot produce `wi`:
+/// `wi` at or below the horizon, `wo·h ≤ 0`, `wo ≈ −wi`), roughnesses from 0 (raised to
+/// `MIN_ALPHA`) to 1.
+pub const DOMAIN: &[Param] = &[
+    cosine("ndf_pdf", "cos θo", &["wo"], |c| of(c).map(|x| cos_z(x.0))),
+    cosine("ndf_pdf", "cos θi", &["wi"], |c| of(c).map(|x| cos_z(x.1))),
+    Param::new(
+        "ndf_pdf",
+        "cos(wo, wi)",
+        &["wo", "wi"],
+        |c| of(c).map(|x| cos_between(x.0, x.1)),
+        -1.0,
+        1.0,
+    )
+    .boundaries(&[Boundary {
+        at: -1.0,
+        what: "wo = −wi (no half vector)",
+    }]),
+    roughness("ndf_pdf", "alpha_x", &["alpha_x"], |c| {
+        of(c).map(|x| x.2 as f64)
+    }),
+    roughness("ndf_pdf", "alpha_y", &["alpha_y"], |c| {
+        of(c).map(|x| x.3 as f64)
+    }),
+    anisotropy("ndf_pdf", &["alpha_x", "alpha_y"], |c| {
+        of(c).and_then(|x| ratio(x.2, x.3))
+    }),
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
         .map(|i| {
-            let wo = upper(s, 0.05);
-            let wi = upper(s, 0.0);
-            let (ax, ay) = (roughness(s, 0.05, 1.0), roughness(s, 0.05, 1.0));
-            if i % 8 == 7 {
-                pdf("", wo, -wi, ax, ay).note(BELOW)
+            let cos_o = d.value(&DOMAIN[0]);
+            let wo = d.direction_at(Vec3::Z, cos_o);
+            let wi = if i % 8 == 3 {
+                let c = d.value(&DOMAIN[2]);
+                d.direction_at(wo, c)
             } else {
-                pdf("", wo, wi, ax, ay).note(PDF)
+                let cos_i = d.value(&DOMAIN[1]);
+                d.direction_at(Vec3::Z, cos_i)
+            };
+            let (ax, ay) = d.alpha_pair(&DOMAIN[3], &DOMAIN[5]);
+            let case = pdf("", wo, wi, ax, ay);
+            if wi.z <= 0.0 {
+                case.note(BELOW)
+            } else {
+                case.note(PDF)
             }
         })
         .collect()

@@ -1,10 +1,10 @@
 //! Cases of `phong` and `reciprocity_gap`.
 
 use super::CaseInput;
-use super::random::{colour, range, upper};
 use crate::bsdf::PhongParams;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
+use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, cos_z, cosine};
 use crate::grade::test_brdf::TestBrdf;
 use crate::grade::tolerance::Tolerance;
 use crate::sampling::Sampler;
@@ -113,19 +113,115 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+fn of(c: &Call) -> Option<(Vec3, Vec3, &PhongParams)> {
+    match c {
+        Call::Phong { wo, wi, params } => Some((*wo, *wi, params)),
+        _ => None,
+    }
+}
+
+/// The mirror of the unit local `wi` about the normal `z`.
+fn mirror(wi: Vec3) -> Vec3 {
+    Vec3::new(-wi.x, -wi.y, wi.z)
+}
+
+/// A colour channel of `kd` or `ks`: in [0, 1] (`kd + ks ≤ 1` conserves energy).
+const CHANNEL: (f64, f64) = (0.0, 1.0);
+
+/// The declared domain of `phong(wo, wi, params)` and `reciprocity_gap(brdf, sampler,
+/// pairs)`: unit local directions anywhere (0 at or below the horizon), `r·wo` from −1
+/// (clamped: a negative base to a fractional power is NaN) to 1 (the peak), channels of
+/// `kd` and `ks` in [0, 1], an exponent ≥ 0 that need not be an integer (0 gives the
+/// clamped `0^0 = 1`); any BRDF closure, seed and number of pairs.
+pub const DOMAIN: &[Param] = &[
+    cosine("phong", "cos θo", &["wo"], |c| of(c).map(|x| cos_z(x.0))),
+    cosine("phong", "cos θi", &["wi"], |c| of(c).map(|x| cos_z(x.1))),
+    Param::new(
+        "phong",
+        "r·wo",
+        &["wo", "wi"],
+        |c| of(c).map(|x| cos_between(mirror(x.1), x.0)),
+        -1.0,
+        1.0,
+    )
+    .boundaries(&[
+        Boundary {
+            at: 0.0,
+            what: "the edge of the lobe (clamp r·wo before powf)",
+        },
+        Boundary {
+            at: 1.0,
+            what: "the peak of the lobe",
+        },
+    ]),
+    Param::new(
+        "phong",
+        "largest channel of kd",
+        &["params.kd"],
+        |c| of(c).map(|x| x.2.kd.max_element() as f64),
+        CHANNEL.0,
+        CHANNEL.1,
+    )
+    .special(&[0.0, 1.0]),
+    Param::new(
+        "phong",
+        "largest channel of ks",
+        &["params.ks"],
+        |c| of(c).map(|x| x.2.ks.max_element() as f64),
+        CHANNEL.0,
+        CHANNEL.1,
+    )
+    .special(&[0.0, 1.0]),
+    Param::new(
+        "phong",
+        "exponent",
+        &["params.exponent"],
+        |c| of(c).map(|x| x.2.exponent as f64),
+        0.0,
+        1000.0,
+    )
+    .spread(Spread::Log {
+        from: 0.5,
+        to: 200.0,
+    })
+    .boundaries(&[Boundary {
+        at: 0.0,
+        what: "n = 0 (the clamped 0^0 is 1)",
+    }])
+    .special(&[1.0, 2.0, 10.5])
+    .resolution(1e-6)
+    .open(),
+    Param::new(
+        "reciprocity_gap",
+        "pairs",
+        &["brdf", "seed", "pairs"],
+        |c| match c {
+            Call::ReciprocityGap { pairs, .. } => Some(*pairs as f64),
+            _ => None,
+        },
+        1.0,
+        1e5,
+    ),
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
         .map(|i| {
-            let (wo, wi) = (upper(s, 0.0), upper(s, 0.0));
-            let exponent = match i % 3 {
-                0 => (1.0 + range(s, 0.0, 50.0)).floor(),
-                1 => range(s, 1.0, 100.0),
-                _ => range(s, 0.5, 3.0),
+            let cos_i = d.value(&DOMAIN[1]);
+            let wi = d.direction_at(Vec3::Z, cos_i);
+            // One case in four aims wo at the lobe's peak or its edge.
+            let wo = if i % 4 == 1 {
+                let c = d.value(&DOMAIN[2]);
+                d.direction_at(mirror(wi), c)
+            } else {
+                let cos_o = d.value(&DOMAIN[0]);
+                d.direction_at(Vec3::Z, cos_o)
             };
             let params = PhongParams {
-                kd: colour(s, 0.0, 0.5),
-                ks: colour(s, 0.0, 0.5),
-                exponent,
+                kd: d.colour(&DOMAIN[3]),
+                ks: d.colour(&DOMAIN[4]),
+                exponent: d.value(&DOMAIN[5]) as f32,
             };
             CaseInput::new("", Call::Phong { wo, wi, params }).note(PHONG)
         })

@@ -1,8 +1,8 @@
 //! Cases of `reflect`.
 
 use super::CaseInput;
-use super::random::{range, sphere, upper};
 use crate::grade::call::Call;
+use crate::grade::domain::{Draw, Param, Spread, UPPER_COS_BOUNDARIES, cos_between};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -46,14 +46,80 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+/// Lengths of a vector the text allows without requiring unit length (`n`; and `wo`,
+/// whose length the result keeps).
+const LENGTH: (f64, f64) = (1e-2, 1e2);
+
+/// The declared domain of `reflect(wo, n)`: `wo` on the side `n` points to, from grazing to
+/// the normal; `n` any non-zero vector along the normal, and `wo` of any length (the
+/// result keeps it).
+pub const DOMAIN: &[Param] = &[
+    Param {
+        function: "reflect",
+        name: "cos(wo, n)",
+        covers: &["wo", "n"],
+        value: |c| match c {
+            Call::Reflect { wo, n } => Some(cos_between(*wo, *n)),
+            _ => None,
+        },
+        lo: 0.0,
+        hi: 1.0,
+        spread: Spread::Linear,
+        boundaries: UPPER_COS_BOUNDARIES,
+        special: &[],
+        resolution: 1e-7,
+        on_boundaries: true,
+    },
+    Param {
+        function: "reflect",
+        name: "|n|",
+        covers: &["n"],
+        value: |c| match c {
+            Call::Reflect { n, .. } => Some(n.length() as f64),
+            _ => None,
+        },
+        lo: LENGTH.0,
+        hi: LENGTH.1,
+        spread: Spread::Log {
+            from: LENGTH.0,
+            to: LENGTH.1,
+        },
+        boundaries: &[],
+        special: &[1.0, 2.0],
+        resolution: 1e-6,
+        on_boundaries: true,
+    },
+    Param {
+        function: "reflect",
+        name: "|wo|",
+        covers: &["wo"],
+        value: |c| match c {
+            Call::Reflect { wo, .. } => Some(wo.length() as f64),
+            _ => None,
+        },
+        lo: LENGTH.0,
+        hi: LENGTH.1,
+        spread: Spread::Log {
+            from: LENGTH.0,
+            to: LENGTH.1,
+        },
+        boundaries: &[],
+        special: &[1.0],
+        resolution: 1e-6,
+        on_boundaries: true,
+    },
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
         .map(|_| {
-            let n = sphere(s);
-            let frame = crate::math::Frame::from_normal(n);
-            let wo = frame.to_world(upper(s, 0.0));
-            let scale = range(s, 0.5, 2.0);
-            CaseInput::new("", Call::Reflect { wo, n: n * scale })
+            let n = d.sphere();
+            let cos = d.value(&DOMAIN[0]);
+            let wo = d.direction_at(n, cos);
+            let n = n * d.value(&DOMAIN[1]) as f32;
+            let wo = wo * d.value(&DOMAIN[2]) as f32;
+            CaseInput::new("", Call::Reflect { wo, n })
                 .note("n need not have unit length; keep the length of wo and its angle to n")
         })
         .collect()

@@ -1,9 +1,10 @@
 //! Cases of `refract`, `critical_angle` and `refract_stack`.
 
 use super::CaseInput;
-use super::random::{eta, range, range64, sphere, upper};
+use super::indices::{CRITICAL_ANGLE, EQUAL_INDICES, eta_pair, sin2_t};
 use crate::grade::call::{Call, StackInput};
 use crate::grade::case::Rule;
+use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, upper_cosine};
 use crate::grade::tolerance::Tolerance;
 use crate::sampling::Sampler;
 use glam::Vec3;
@@ -116,64 +117,274 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
-    let mut cases = Vec::with_capacity(count);
-    while cases.len() < count {
-        match cases.len() % 3 {
-            0 => {
-                let n = sphere(s);
-                let frame = crate::math::Frame::from_normal(n);
-                let wi = frame.to_world(upper(s, 0.0));
-                let (eta_i, eta_t) = (eta(s), eta(s));
-                let sin2_t = (eta_i / eta_t).powi(2) * (1.0 - wi.dot(n).powi(2)).max(0.0);
-                // Within rounding of the critical angle both answers are right.
-                if (sin2_t - 1.0).abs() < 1e-3 {
-                    continue;
-                }
-                let case = CaseInput::new(
-                    "",
-                    Call::Refract {
-                        wi,
-                        n: n * range(s, 0.5, 2.0),
-                        eta_i,
-                        eta_t,
-                    },
-                );
-                cases.push(if sin2_t > 1.0 { case.note(TIR) } else { case });
-            }
-            1 => {
-                let (eta_i, eta_t) = (eta(s) as f64, eta(s) as f64);
-                cases.push(
-                    CaseInput::new("", Call::CriticalAngle { eta_i, eta_t })
-                        .rule(Rule::Close(Tolerance::F64))
-                        .note(CRITICAL),
-                );
-            }
-            _ => {
-                let slabs = (0..1 + (s.next_1d() * 3.0) as usize)
-                    .map(|_| (eta(s) as f64, range64(s, 0.5, 20.0)))
-                    .collect::<Vec<_>>();
-                let st = stack(eta(s) as f64, &slabs, eta(s) as f64);
-                let theta_deg = range64(s, 0.0, 85.0);
-                // Skip stacks that graze an interface within rounding of its critical angle.
-                let invariant = st.eta_incident * theta_deg.to_radians().sin();
-                let etas = slabs.iter().map(|x| x.0).chain([st.eta_exit]);
-                if etas.into_iter().any(|e| (invariant / e - 1.0).abs() < 1e-3) {
-                    continue;
-                }
-                cases.push(
-                    CaseInput::new(
-                        "",
-                        Call::RefractStack {
-                            theta_deg,
-                            stack: st,
-                        },
-                    )
-                    .rule(Rule::Close(STACK_TOLERANCE))
-                    .note(STACK),
-                );
-            }
+/// Indices of refraction the grader draws: air to diamond.
+const ETA: (f64, f64) = (1.0, 2.42);
+
+fn refract_of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
+    match c {
+        Call::Refract {
+            wi,
+            n,
+            eta_i,
+            eta_t,
+        } => Some((*wi, *n, *eta_i, *eta_t)),
+        _ => None,
+    }
+}
+
+fn stack_of(c: &Call) -> Option<(f64, &StackInput)> {
+    match c {
+        Call::RefractStack { theta_deg, stack } => Some((*theta_deg, stack)),
+        _ => None,
+    }
+}
+
+/// The largest `sin²θ` over the media after the first: past 1 the ray reflects totally.
+fn largest_sin2(theta_deg: f64, stack: &StackInput) -> f64 {
+    let invariant = stack.eta_incident * theta_deg.to_radians().sin();
+    stack
+        .slabs
+        .iter()
+        .map(|s| s.0)
+        .chain([stack.eta_exit])
+        .map(|eta| (invariant / eta).powi(2))
+        .fold(0.0, f64::max)
+}
+
+/// The ratio of neighbouring indices nearest to 1 (equal neighbours: no interface).
+fn nearest_equal(stack: &StackInput) -> f64 {
+    let etas: Vec<f64> = std::iter::once(stack.eta_incident)
+        .chain(stack.slabs.iter().map(|s| s.0))
+        .chain([stack.eta_exit])
+        .collect();
+    etas.windows(2)
+        .map(|w| w[0] / w[1])
+        .min_by(|a, b| (a.ln().abs()).total_cmp(&b.ln().abs()))
+        .unwrap_or(1.0)
+}
+
+/// The declared domain of `refract(wi, n, eta_i, eta_t)`, `critical_angle(eta_i, eta_t)`
+/// and `refract_stack(theta_deg, stack)`: `wi` on the side `n` points to, `n` of any
+/// non-zero length, indices from air to diamond either way round and equal; total internal
+/// reflection from the critical angle on (`sin²θt ≥ 1`); stacks of zero or more slabs of
+/// any finite thickness, at incidence from the normal to grazing, of any intensity.
+pub const DOMAIN: &[Param] = &[
+    upper_cosine("refract", "cos(wi, n)", &["wi", "n"], |c| {
+        refract_of(c).map(|x| cos_between(x.0, x.1))
+    }),
+    Param::new(
+        "refract",
+        "|n|",
+        &["n"],
+        |c| refract_of(c).map(|x| x.1.length() as f64),
+        1e-2,
+        1e2,
+    )
+    .spread(Spread::Log {
+        from: 1e-2,
+        to: 1e2,
+    })
+    .special(&[1.0, 2.0])
+    .resolution(1e-6),
+    Param::new(
+        "refract",
+        "η_i/η_t",
+        &["eta_i", "eta_t"],
+        |c| refract_of(c).map(|x| x.2 as f64 / x.3 as f64),
+        ETA.0 / ETA.1,
+        ETA.1 / ETA.0,
+    )
+    .spread(Spread::Log {
+        from: ETA.0 / ETA.1,
+        to: ETA.1 / ETA.0,
+    })
+    .boundaries(EQUAL_INDICES)
+    .resolution(1e-6),
+    Param::new(
+        "refract",
+        "sin²θt",
+        &[],
+        |c| refract_of(c).map(|x| sin2_t(cos_between(x.0, x.1), x.2 as f64 / x.3 as f64)),
+        0.0,
+        (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
+    )
+    .boundaries(CRITICAL_ANGLE)
+    .resolution(1e-5)
+    .open(),
+    Param::new(
+        "critical_angle",
+        "η_i/η_t",
+        &["eta_i", "eta_t"],
+        |c| match c {
+            Call::CriticalAngle { eta_i, eta_t } => Some(eta_i / eta_t),
+            _ => None,
+        },
+        ETA.0 / ETA.1,
+        ETA.1 / ETA.0,
+    )
+    .spread(Spread::Log {
+        from: ETA.0 / ETA.1,
+        to: ETA.1 / ETA.0,
+    })
+    .boundaries(EQUAL_INDICES)
+    .resolution(1e-6),
+    Param::new(
+        "refract_stack",
+        "θ (degrees)",
+        &["theta_deg"],
+        |c| stack_of(c).map(|x| x.0),
+        0.0,
+        89.9,
+    )
+    .boundaries(&[Boundary {
+        at: 0.0,
+        what: "normal incidence",
+    }]),
+    Param::new(
+        "refract_stack",
+        "largest sin²θ",
+        &["stack.eta_incident", "stack.slabs", "stack.eta_exit"],
+        |c| stack_of(c).map(|x| largest_sin2(x.0, x.1)),
+        0.0,
+        (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
+    )
+    .boundaries(CRITICAL_ANGLE)
+    .resolution(1e-5)
+    .open(),
+    Param::new(
+        "refract_stack",
+        "neighbouring indices",
+        &["stack.eta_incident", "stack.slabs", "stack.eta_exit"],
+        |c| stack_of(c).map(|x| nearest_equal(x.1)),
+        ETA.0 / ETA.1,
+        ETA.1 / ETA.0,
+    )
+    .spread(Spread::Log {
+        from: ETA.0 / ETA.1,
+        to: ETA.1 / ETA.0,
+    })
+    .boundaries(EQUAL_INDICES)
+    .resolution(1e-6),
+    Param::new(
+        "refract_stack",
+        "slabs",
+        &["stack.slabs"],
+        |c| stack_of(c).map(|x| x.1.slabs.len() as f64),
+        0.0,
+        4.0,
+    )
+    .special(&[0.0, 1.0]),
+    Param::new(
+        "refract_stack",
+        "thickness",
+        &["stack.slabs"],
+        |c| stack_of(c).and_then(|x| x.1.slabs.iter().map(|s| s.1).min_by(|a, b| a.total_cmp(b))),
+        1e-2,
+        1e2,
+    )
+    .spread(Spread::Log {
+        from: 1e-2,
+        to: 1e2,
+    }),
+    Param::new(
+        "refract_stack",
+        "intensity",
+        &["stack.intensity"],
+        |c| stack_of(c).map(|x| x.1.intensity),
+        1e-2,
+        1e3,
+    )
+    .spread(Spread::Log {
+        from: 1e-2,
+        to: 1e2,
+    })
+    .special(&[1.0, 100.0]),
+];
+
+/// `refract` with indices whose ratio comes from [`DOMAIN`]`[2]`; every other case aims at
+/// the critical angle when the light goes to a less dense medium.
+fn random_refract(d: &mut Draw, aim: bool) -> CaseInput {
+    let (eta_i, eta_t) = eta_pair(d, &DOMAIN[2], ETA);
+    let ratio = eta_i as f64 / eta_t as f64;
+    let cos = if aim && ratio > 1.0 {
+        let s2 = d.value(&DOMAIN[3]);
+        (1.0 - s2 / (ratio * ratio)).max(0.0).sqrt()
+    } else {
+        d.value(&DOMAIN[0])
+    };
+    let n = d.sphere();
+    let wi = d.direction_at(n, cos);
+    let n = n * d.value(&DOMAIN[1]) as f32;
+    let case = CaseInput::new(
+        "",
+        Call::Refract {
+            wi,
+            n,
+            eta_i,
+            eta_t,
+        },
+    );
+    if sin2_t(cos_between(wi, n), ratio) >= 1.0 {
+        case.note(TIR)
+    } else {
+        case
+    }
+}
+
+/// A stack drawn from [`DOMAIN`]: zero to four slabs, neighbours sometimes equal, and every
+/// other case aimed at the critical angle of one medium.
+fn random_stack(d: &mut Draw, aim: bool) -> CaseInput {
+    let eta = |d: &mut Draw| ETA.0 + (ETA.1 - ETA.0) * d.unit();
+    let count = d.value(&DOMAIN[8]).round() as usize;
+    let mut etas: Vec<f64> = (0..count + 2).map(|_| eta(d)).collect();
+    // Now and then a neighbour at a ratio near 1 (or exactly equal).
+    if d.unit() < 0.5 {
+        let k = 1 + d.index(etas.len() - 1);
+        etas[k] = (etas[k - 1] / d.value(&DOMAIN[7])).clamp(ETA.0, ETA.1);
+    }
+    let slabs: Vec<(f64, f64)> = etas[1..etas.len() - 1]
+        .iter()
+        .map(|&e| (e, d.value(&DOMAIN[9])))
+        .collect();
+    let mut st = stack(etas[0], &slabs, etas[etas.len() - 1]);
+    st.intensity = d.value(&DOMAIN[10]);
+    let mut theta_deg = d.value(&DOMAIN[5]);
+    if aim {
+        let k = 1 + d.index(etas.len() - 1);
+        let s = d.value(&DOMAIN[6]).sqrt() * etas[k] / etas[0];
+        if s < 1.0 {
+            theta_deg = s.asin().to_degrees().min(DOMAIN[5].hi);
         }
     }
-    cases
+    CaseInput::new(
+        "",
+        Call::RefractStack {
+            theta_deg,
+            stack: st,
+        },
+    )
+    .rule(Rule::Close(STACK_TOLERANCE))
+    .note(STACK)
+}
+
+pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
+    (0..count)
+        .map(|i| match i % 3 {
+            0 => random_refract(&mut d, i % 2 == 1),
+            1 => {
+                let (eta_i, eta_t) = eta_pair(&mut d, &DOMAIN[4], ETA);
+                CaseInput::new(
+                    "",
+                    Call::CriticalAngle {
+                        eta_i: eta_i as f64,
+                        eta_t: eta_t as f64,
+                    },
+                )
+                .rule(Rule::Close(Tolerance::F64))
+                .note(CRITICAL)
+            }
+            _ => random_stack(&mut d, i % 2 == 1),
+        })
+        .collect()
 }

@@ -1,8 +1,10 @@
 //! Cases of `smith_g1`.
 
 use super::CaseInput;
-use super::random::{roughness, upper};
 use crate::grade::call::Call;
+use crate::grade::domain::{
+    COS_BOUNDARIES, Draw, Param, ROUGHNESS_BOUNDARIES, ROUGHNESS_SPREAD, Spread, cos_z,
+};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -31,15 +33,55 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
+/// The declared domain of `smith_g1(w, alpha)`: `w` any unit direction (below the horizon
+/// returns 0), `alpha` from 0 (a mirror, still finite) to 1 and beyond (very rough).
+pub const DOMAIN: &[Param] = &[
+    Param {
+        function: "smith_g1",
+        name: "cos θ of w",
+        covers: &["w"],
+        value: |c| match c {
+            Call::SmithG1 { w, .. } => Some(cos_z(*w)),
+            _ => None,
+        },
+        lo: -1.0,
+        hi: 1.0,
+        spread: Spread::Linear,
+        boundaries: COS_BOUNDARIES,
+        special: &[],
+        resolution: 1e-7,
+        on_boundaries: true,
+    },
+    Param {
+        function: "smith_g1",
+        name: "alpha",
+        covers: &["alpha"],
+        value: |c| match c {
+            Call::SmithG1 { alpha, .. } => Some(*alpha as f64),
+            _ => None,
+        },
+        lo: 0.0,
+        hi: 1.0,
+        spread: ROUGHNESS_SPREAD,
+        boundaries: ROUGHNESS_BOUNDARIES,
+        special: &[0.0, 1.0],
+        resolution: 1e-6,
+        on_boundaries: true,
+    },
+];
+
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+    let mut d = Draw::new(s);
     (0..count)
-        .map(|i| {
-            let w = upper(s, 0.0);
-            let alpha = roughness(s, 0.05, 1.0);
-            if i % 8 == 7 {
-                CaseInput::new("", Call::SmithG1 { w: -w, alpha }).note(BACK)
+        .map(|_| {
+            let cos = d.value(&DOMAIN[0]);
+            let w = d.direction_at(Vec3::Z, cos);
+            let alpha = d.value(&DOMAIN[1]) as f32;
+            let case = CaseInput::new("", Call::SmithG1 { w, alpha });
+            if w.z <= 0.0 {
+                case.note(BACK)
             } else {
-                CaseInput::new("", Call::SmithG1 { w, alpha }).note(G1)
+                case.note(G1)
             }
         })
         .collect()

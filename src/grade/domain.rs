@@ -1,0 +1,414 @@
+//! Declared domains: for every parameter of a task function (or a quantity derived from
+//! several, such as `sin²θt`), the range its exercise text allows, the values it names as
+//! allowed, and the boundaries where the contract changes behaviour. Each task's
+//! catalogue file declares its own ([`super::catalogue`]); the value cases are drawn from
+//! them ([`Draw`]) with a bias toward the boundaries, and the boundary-mutation score
+//! (`tests/instructor_domain.rs`) makes a wrong variant of the reference for every band
+//! declared here.
+
+use super::call::Call;
+use crate::sampling::Sampler;
+use glam::Vec3;
+
+/// How the values of a parameter spread between its limits when drawn away from the
+/// boundaries.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Spread {
+    /// Uniform between `lo` and `hi`.
+    Linear,
+    /// Log-uniform from `from` to `to` (small and large values equally common); the
+    /// decades outside, down to a limit at 0, are the boundaries' bands.
+    Log {
+        /// Where the log-uniform spread starts.
+        from: f64,
+        /// Where it ends.
+        to: f64,
+    },
+}
+
+/// A value of a parameter where the contract changes: a limit, a singularity, or a
+/// threshold the exercise text names.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Boundary {
+    /// Where it lies.
+    pub at: f64,
+    /// What happens there, as a student reads it in a failure (`the horizon`, `TIR`).
+    pub what: &'static str,
+}
+
+/// One declared parameter of a task function, or one quantity derived from its
+/// parameters.
+#[derive(Clone, Copy, Debug)]
+pub struct Param {
+    /// The task function (`smith_g1`, `refract`); [`Call::function`] names the same.
+    pub function: &'static str,
+    /// The quantity, as a student reads it (`cos θ of w`, `alpha`, `η_i/η_t`).
+    pub name: &'static str,
+    /// The call's inputs this declaration covers, as paths into the call's stored form
+    /// (`w`, `params.exponent`, `stack.slabs`).
+    pub covers: &'static [&'static str],
+    /// The quantity of a call of this function (`None` for another function's call).
+    pub value: fn(&Call) -> Option<f64>,
+    /// Lowest allowed value.
+    pub lo: f64,
+    /// Highest allowed value.
+    pub hi: f64,
+    /// How values spread away from the boundaries.
+    pub spread: Spread,
+    /// Where the contract changes.
+    pub boundaries: &'static [Boundary],
+    /// Allowed values the text names explicitly (`alpha = 0`, `cos θ = 1 + 1e-7`).
+    pub special: &'static [f64],
+    /// No drawn value lies closer than this (relative, see [`Param::scale`]) to a
+    /// boundary without lying on it: closer, correct implementations may round either way
+    /// (a TIR threshold) or the rounding of the inputs decides the side.
+    pub resolution: f64,
+    /// Whether the contract defines the value on a boundary itself (drawn exactly), or
+    /// leaves it open (`0^0` for an exponent of 0: only the bands are drawn).
+    pub on_boundaries: bool,
+}
+
+/// The share of draws that are exactly a boundary or a special value.
+const EXACT: f32 = 0.1;
+/// The share of draws in a log-spaced band on either side of a boundary.
+const NEAR: f32 = 0.4;
+/// The widest band, relative to [`Param::scale`].
+const WIDEST_BAND: f64 = 0.1;
+
+impl Param {
+    /// A parameter of `function` over `[lo, hi]`, spread linearly, with no boundary, no
+    /// special value and a resolution of 1e-7; the builder methods below add the rest.
+    pub const fn new(
+        function: &'static str,
+        name: &'static str,
+        covers: &'static [&'static str],
+        value: fn(&Call) -> Option<f64>,
+        lo: f64,
+        hi: f64,
+    ) -> Self {
+        Self {
+            function,
+            name,
+            covers,
+            value,
+            lo,
+            hi,
+            spread: Spread::Linear,
+            boundaries: &[],
+            special: &[],
+            resolution: 1e-7,
+            on_boundaries: true,
+        }
+    }
+
+    /// The same parameter with its boundaries left open: drawn near, never on them.
+    pub const fn open(mut self) -> Self {
+        self.on_boundaries = false;
+        self
+    }
+
+    /// The same parameter spread as `spread`.
+    pub const fn spread(mut self, spread: Spread) -> Self {
+        self.spread = spread;
+        self
+    }
+
+    /// The same parameter with these boundaries.
+    pub const fn boundaries(mut self, boundaries: &'static [Boundary]) -> Self {
+        self.boundaries = boundaries;
+        self
+    }
+
+    /// The same parameter with these special values.
+    pub const fn special(mut self, special: &'static [f64]) -> Self {
+        self.special = special;
+        self
+    }
+
+    /// The same parameter with this resolution.
+    pub const fn resolution(mut self, resolution: f64) -> Self {
+        self.resolution = resolution;
+        self
+    }
+
+    /// The unit that offsets from `boundary` are relative to: its magnitude, at least 1.
+    pub fn scale(&self, boundary: f64) -> f64 {
+        boundary.abs().max(1.0)
+    }
+
+    /// The boundaries and special values inside the range, where a draw may land exactly.
+    pub fn exact_values(&self) -> impl Iterator<Item = f64> + '_ {
+        self.boundaries
+            .iter()
+            .filter(|_| self.on_boundaries)
+            .map(|b| b.at)
+            .chain(self.special.iter().copied())
+            .filter(|v| (self.lo..=self.hi).contains(v))
+    }
+
+    /// The boundary nearest to `value`, with its distance relative to [`Param::scale`].
+    pub fn nearest_boundary(&self, value: f64) -> Option<(&Boundary, f64)> {
+        self.boundaries
+            .iter()
+            .map(|b| (b, (value - b.at).abs() / self.scale(b.at)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    }
+}
+
+/// Draws values of declared parameters from a sampler: exact boundary and special values,
+/// log-spaced bands on both sides of every boundary, and the rest spread over the range.
+pub struct Draw<'s> {
+    s: &'s mut Sampler,
+}
+
+impl<'s> Draw<'s> {
+    /// Draws from `s`.
+    pub fn new(s: &'s mut Sampler) -> Self {
+        Self { s }
+    }
+
+    /// A uniform number in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        self.s.next_f64()
+    }
+
+    /// One value of `p`, biased toward its boundaries.
+    pub fn value(&mut self, p: &Param) -> f64 {
+        let pick = self.s.next_1d();
+        let exact: Vec<f64> = p.exact_values().collect();
+        if pick < EXACT && !exact.is_empty() {
+            return exact[self.index(exact.len())];
+        }
+        if pick < EXACT + NEAR && !p.boundaries.is_empty() {
+            let b = p.boundaries[self.index(p.boundaries.len())].at;
+            let band = p.resolution.log10()
+                + (WIDEST_BAND.log10() - p.resolution.log10()) * self.s.next_f64();
+            let offset = 10f64.powf(band) * p.scale(b);
+            let (below, above) = (b - offset, b + offset);
+            let below_ok = below >= p.lo;
+            let above_ok = above <= p.hi;
+            let v = match (below_ok, above_ok) {
+                (true, true) if self.s.next_1d() < 0.5 => below,
+                (true, true) | (false, true) => above,
+                (true, false) => below,
+                (false, false) => self.spread(p),
+            };
+            return v;
+        }
+        self.spread(p)
+    }
+
+    /// A value of `p` away from the boundaries: uniform or log-uniform over the range.
+    fn spread(&mut self, p: &Param) -> f64 {
+        let u = self.s.next_f64();
+        match p.spread {
+            Spread::Linear => p.lo + (p.hi - p.lo) * u,
+            Spread::Log { from, to } => (from.ln() + (to.ln() - from.ln()) * u).exp(),
+        }
+    }
+
+    /// A uniform index below `n`.
+    pub fn index(&mut self, n: usize) -> usize {
+        ((self.s.next_f64() * n as f64) as usize).min(n - 1)
+    }
+
+    /// A unit vector making cosine `cos` with `axis` (a unit vector), at a uniform
+    /// azimuth about it.
+    pub fn direction_at(&mut self, axis: Vec3, cos: f64) -> Vec3 {
+        let cos = cos.clamp(-1.0, 1.0);
+        let sin = (1.0 - cos * cos).max(0.0).sqrt();
+        let phi = std::f64::consts::TAU * self.s.next_f64();
+        let frame = crate::math::Frame::from_normal(axis);
+        let local = glam::DVec3::new(sin * phi.cos(), sin * phi.sin(), cos);
+        frame.to_world(local.as_vec3()).normalize()
+    }
+
+    /// A unit vector uniform on the sphere.
+    pub fn sphere(&mut self) -> Vec3 {
+        let cos = 2.0 * self.s.next_f64() - 1.0;
+        self.direction_at(Vec3::Z, cos)
+    }
+}
+
+/// The cosine a unit `w` makes with the local normal `z`, in f64.
+pub fn cos_z(w: Vec3) -> f64 {
+    w.z as f64
+}
+
+/// The cosine between two vectors of any non-zero length, in f64.
+pub fn cos_between(a: Vec3, b: Vec3) -> f64 {
+    let (a, b) = (a.as_dvec3(), b.as_dvec3());
+    a.dot(b) / (a.length() * b.length())
+}
+
+/// Boundaries of a cosine over [−1, 1]: the horizon and both poles.
+pub const COS_BOUNDARIES: &[Boundary] = &[
+    Boundary {
+        at: 0.0,
+        what: "the horizon",
+    },
+    Boundary {
+        at: 1.0,
+        what: "the normal",
+    },
+    Boundary {
+        at: -1.0,
+        what: "straight below",
+    },
+];
+
+/// Boundaries of a cosine over [0, 1]: the horizon and the normal.
+pub const UPPER_COS_BOUNDARIES: &[Boundary] = &[
+    Boundary {
+        at: 0.0,
+        what: "the horizon",
+    },
+    Boundary {
+        at: 1.0,
+        what: "the normal",
+    },
+];
+
+/// Where the spread of a roughness starts: below it lie the bands of the mirror limit.
+pub const ROUGHNESS_SPREAD: Spread = Spread::Log {
+    from: 0.02,
+    to: 1.0,
+};
+
+/// The boundary of a roughness at 0 (a mirror).
+pub const ROUGHNESS_BOUNDARIES: &[Boundary] = &[Boundary {
+    at: 0.0,
+    what: "a mirror (α → 0)",
+}];
+
+/// A cosine over [−1, 1] (a unit direction anywhere on the sphere) with the horizon and
+/// both poles as boundaries.
+pub const fn cosine(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, -1.0, 1.0).boundaries(COS_BOUNDARIES)
+}
+
+/// A cosine over [0, 1] (a direction on the side the normal points to) with the horizon
+/// and the normal as boundaries.
+pub const fn upper_cosine(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, 0.0, 1.0).boundaries(UPPER_COS_BOUNDARIES)
+}
+
+/// A roughness over [0, 1]: 0 (a mirror, raised to `MIN_ALPHA` by the reference) and 1
+/// are named by the texts; the mirror limit is a boundary.
+pub const fn roughness(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, 0.0, 1.0)
+        .spread(ROUGHNESS_SPREAD)
+        .boundaries(ROUGHNESS_BOUNDARIES)
+        .special(&[0.0, 1.0])
+        .resolution(1e-6)
+}
+
+/// The anisotropy `αx/αy` of a pair of roughnesses, with isotropy (1) as its boundary.
+pub const fn anisotropy(
+    function: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, "αx/αy", covers, value, 0.0, f64::INFINITY)
+        .spread(Spread::Log {
+            from: 0.05,
+            to: 20.0,
+        })
+        .boundaries(&[Boundary {
+            at: 1.0,
+            what: "isotropy (αx = αy)",
+        }])
+        .resolution(1e-6)
+}
+
+/// `a/b`, or `None` when either is 0 (the anisotropy of a mirror is not defined).
+pub fn ratio(a: f32, b: f32) -> Option<f64> {
+    (a != 0.0 && b != 0.0).then(|| a as f64 / b as f64)
+}
+
+impl Draw<'_> {
+    /// A pair of roughnesses: each from `alpha`, or (half the time) the first from `alpha`
+    /// and the second through the anisotropy `ratio`, so isotropy and its bands are
+    /// reached.
+    pub fn alpha_pair(&mut self, alpha: &Param, ratio: &Param) -> (f32, f32) {
+        let ax = self.value(alpha);
+        if self.unit() < 0.5 {
+            return (ax as f32, self.value(alpha) as f32);
+        }
+        let r = self.value(ratio);
+        let ay = (ax / r).clamp(alpha.lo, alpha.hi);
+        (ax as f32, ay as f32)
+    }
+
+    /// An RGB colour with channels in `[lo, hi]`: a grey from `channel` a quarter of the
+    /// time (so its special values are reached in every channel at once), else three
+    /// independent channels.
+    pub fn colour(&mut self, channel: &Param) -> Vec3 {
+        if self.unit() < 0.25 {
+            Vec3::splat(self.value(channel) as f32)
+        } else {
+            Vec3::new(
+                self.value(channel) as f32,
+                self.value(channel) as f32,
+                self.value(channel) as f32,
+            )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const P: Param = Param {
+        function: "f",
+        name: "x",
+        covers: &["x"],
+        value: |_| None,
+        lo: 0.0,
+        hi: 1.0,
+        spread: Spread::Linear,
+        boundaries: UPPER_COS_BOUNDARIES,
+        special: &[0.5],
+        resolution: 1e-6,
+        on_boundaries: true,
+    };
+
+    #[test]
+    fn draws_stay_in_range_and_reach_every_band() {
+        let mut s = Sampler::new(1, 2);
+        let mut d = Draw::new(&mut s);
+        let values: Vec<f64> = (0..4000).map(|_| d.value(&P)).collect();
+        assert!(values.iter().all(|v| (0.0..=1.0).contains(v)));
+        for target in [0.0, 1.0, 0.5] {
+            assert!(values.contains(&target), "{target} never drawn exactly");
+        }
+        // Every decade of the band above 0 and below 1 is reached.
+        for decade in -6..-1 {
+            let (lo, hi) = (10f64.powi(decade), 10f64.powi(decade + 1));
+            assert!(values.iter().any(|v| (lo..hi).contains(v)));
+            assert!(values.iter().any(|v| (lo..hi).contains(&(1.0 - v))));
+        }
+        // Nothing closer to a boundary than the resolution, except on it.
+        assert!(
+            values
+                .iter()
+                .all(|&v| v == 0.0 || v == 1.0 || (v >= 1e-6 * 0.999 && 1.0 - v >= 1e-6 * 0.999))
+        );
+    }
+}
