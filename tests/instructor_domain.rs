@@ -355,3 +355,62 @@ fn every_correct_alternative_passes_the_hidden_cases_of_a_few_seeds() {
 fn every_correct_alternative_passes_the_hidden_cases_of_200_seeds() {
     alternatives_pass(0..200);
 }
+
+#[test]
+fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_report() {
+    use instructor_support::patch::Patch;
+    use pbrlab::grade::report::{gradescope, text, write_html};
+    use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
+    let task = TaskId::SmithG1;
+    let mut patch = Patch::new(task);
+    // Wrong only just above the horizon.
+    patch.smith_g1 = Some(|w, alpha| {
+        if w.z > 0.0 && w.z < 1e-3 {
+            0.5
+        } else {
+            pbrlab_solutions::smith_g1::smith_g1(w, alpha)
+        }
+    });
+    let inputs = instructor_support::inputs(1);
+    let (status, points, checks) = instructor_support::grade(&patch, task, &inputs[&task]);
+    assert_eq!(status, TaskStatus::Failed);
+    let values = checks
+        .iter()
+        .find(|c| c.name == "values")
+        .expect("values ran");
+    assert!(
+        values.summary.contains("simplest failing input: smith_g1(")
+            && values.summary.contains("from the horizon: cos θ of w"),
+        "{}",
+        values.summary
+    );
+    let report = GradeReport::new(
+        "student",
+        1,
+        false,
+        vec![TaskOutcome {
+            task: task.name().into(),
+            status,
+            points,
+            max_points: task.info().points as f64,
+            checks,
+            output: String::new(),
+            seconds: 0.0,
+        }],
+        1.0,
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let html = std::fs::read_to_string(write_html(&report, dir.path()).unwrap()).unwrap();
+    let results = serde_json::to_string(&gradescope(&report)).unwrap();
+    for (name, shown) in [
+        ("HTML", html),
+        ("Gradescope", results),
+        ("text", text(&report)),
+    ] {
+        assert!(
+            shown.contains("simplest failing input: smith_g1(")
+                && shown.contains("from the horizon"),
+            "the {name} report does not name the simplest failing input:\n{shown}"
+        );
+    }
+}

@@ -58,6 +58,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     result.total = cases.len();
     let mut worst: Option<Worst> = None;
     let mut ratios = Vec::new();
+    let mut failing = Vec::new();
     let missing = Err(Panic {
         message: "the worker sent no output for this case".into(),
         location: None,
@@ -87,13 +88,19 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             });
         }
         if let Some(problem) = failure {
-            let note = case
-                .note
-                .as_deref()
-                .map(|n| format!(" ({n})"))
-                .unwrap_or_default();
-            result.fail(format!("{}: {problem}{note} [{}]", case.call, case.name));
+            failing.push((simplicity(case), case, problem));
         }
+    }
+    // The simplest failing input first: a worksheet case, then the shortest inputs (exact
+    // boundary and special values print short), which is where a student starts debugging.
+    failing.sort_by_key(|(key, ..)| *key);
+    for (_, case, problem) in &failing {
+        let note = case
+            .note
+            .as_deref()
+            .map(|n| format!(" ({n})"))
+            .unwrap_or_default();
+        result.fail(format!("{}: {problem}{note} [{}]", case.call, case.name));
     }
     result.finish();
     result.worst = worst;
@@ -108,8 +115,21 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             fmt_num(factor)
         );
     }
+    if let (Some((_, case, problem)), Visibility::Visible) = (failing.first(), visibility) {
+        result.summary += &format!("; simplest failing input: {}: {problem}", case.call);
+        if let Some(position) = super::catalogue::position(&case.call) {
+            result.summary += &format!(" ({position})");
+        }
+    }
     result.seconds = outputs.seconds;
     result
+}
+
+/// How simple a case is to debug (smaller is simpler): a case the worksheet or the errata
+/// name before a drawn one, then the shorter its printed inputs.
+fn simplicity(case: &ValueCase) -> (bool, usize) {
+    let drawn = case.name.starts_with("random") || case.name.starts_with("hidden");
+    (drawn, case.call.to_string().len())
 }
 
 /// got / expected for every component where both are finite and the expected is not 0.

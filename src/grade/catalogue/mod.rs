@@ -26,7 +26,7 @@ mod smith_g1;
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
 use super::domain::Param;
-use super::output::Output;
+use super::output::{Output, fmt_num};
 use super::tolerance::Tolerance;
 use super::variance_pair::VariancePair;
 use crate::panics;
@@ -105,6 +105,43 @@ pub fn domain(task: TaskId) -> &'static [Param] {
         TaskId::BrdfCheck => brdf_check::DOMAIN,
         TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => &[],
     }
+}
+
+/// Where `call` lies in its task's declared domain, for a student reading a failure: on
+/// or near each boundary it is close to (`2.4e-4 from the horizon: cos θ of w = 2.4e-4`),
+/// nearest first, then the values the exercise names that it takes. `None` when it is far
+/// from all of them.
+pub fn position(call: &Call) -> Option<String> {
+    /// Relative distance under which a value is "near" a boundary.
+    const NEAR: f64 = 1e-2;
+    let mut near: Vec<(f64, String)> = Vec::new();
+    let mut named = Vec::new();
+    for p in domain(call.task()) {
+        let Some(v) = (p.value)(call) else { continue };
+        if let Some((b, distance)) = p.nearest_boundary(v).filter(|(_, d)| *d <= NEAR) {
+            let text = if distance == 0.0 {
+                format!("on {}: {} = {}", b.what, p.name, fmt_num(v))
+            } else {
+                format!(
+                    "{} from {}: {} = {}",
+                    fmt_num(distance),
+                    b.what,
+                    p.name,
+                    fmt_num(v)
+                )
+            };
+            near.push((distance, text));
+        } else if p.special.contains(&v) {
+            named.push(format!(
+                "{} = {}, a value the exercise names",
+                p.name,
+                fmt_num(v)
+            ));
+        }
+    }
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let all: Vec<String> = near.into_iter().map(|(_, t)| t).chain(named).collect();
+    (!all.is_empty()).then(|| all.join("; "))
 }
 
 fn fixed(task: TaskId) -> Vec<CaseInput> {
