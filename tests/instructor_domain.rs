@@ -19,7 +19,7 @@ use pbrlab::grade::domain::Param;
 use pbrlab::grade::output::Output;
 use pbrlab::grade::values::{ValueOutputs, judge};
 use pbrlab::grade::verdict::Visibility;
-use pbrlab::worksheet::TaskId;
+use pbrlab::worksheet::{TaskId, Tasks};
 use pbrlab_solutions::TASKS as Reference;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -411,6 +411,46 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
             shown.contains("simplest failing input: smith_g1(")
                 && shown.contains("from the horizon"),
             "the {name} report does not name the simplest failing input:\n{shown}"
+        );
+    }
+}
+
+/// `w` with its polar angle scaled by 1.01 (clamped at the horizon): a sampler 1 % off.
+fn one_percent_off(w: glam::Vec3) -> glam::Vec3 {
+    let theta = (w.z.clamp(-1.0, 1.0).acos() * 1.01).min(std::f32::consts::FRAC_PI_2);
+    let phi = w.y.atan2(w.x);
+    glam::Vec3::new(
+        theta.sin() * phi.cos(),
+        theta.sin() * phi.sin(),
+        theta.cos(),
+    )
+}
+
+#[test]
+fn a_sampler_one_percent_off_its_pdf_fails_its_values() {
+    use instructor_support::patch::Patch;
+    let inputs = instructor_support::inputs(1);
+    let mut cosine = Patch::new(TaskId::CosineSample);
+    cosine.cosine_sample = Some(|u| one_percent_off(pbrlab_solutions::TASKS.cosine_sample(u)));
+    let mut ndf = Patch::new(TaskId::NdfSample);
+    ndf.ndf_sample = Some(|_, wo, ax, ay, u| {
+        pbrlab_solutions::TASKS
+            .ndf_sample(wo, ax, ay, u)
+            .map(one_percent_off)
+    });
+    for (task, patch) in [(TaskId::CosineSample, cosine), (TaskId::NdfSample, ndf)] {
+        let (_, _, checks) = instructor_support::grade(&patch, task, &inputs[&task]);
+        let values = checks
+            .iter()
+            .find(|c| c.name == "values")
+            .expect("values ran");
+        assert!(
+            !values.passed
+                && values
+                    .summary
+                    .contains("the directions do not follow the pdf"),
+            "{task}: {}",
+            values.summary
         );
     }
 }

@@ -85,6 +85,15 @@ pub enum Call {
         seed: u64,
         samples: usize,
     },
+    /// A sampler's warp against its own pdf at each of `points`: the solid angle its
+    /// directions sweep per unit area of the square (central differences of step `h`)
+    /// times the pdf at the direction, which is 1 for a sampler that follows its pdf;
+    /// NaN where the sampler rejects.
+    SampleJacobian {
+        sampler: SampleCall,
+        points: Vec<glam::Vec2>,
+        h: f32,
+    },
 }
 
 /// A [`LayerStack`] as stored in a case (the framework type is not deserialisable).
@@ -134,6 +143,7 @@ impl Call {
             Call::BeckmannNdf { .. } => TaskId::BeckmannNdf,
             Call::NdfPdf { .. } => TaskId::NdfSample,
             Call::BrdfCheck { .. } => TaskId::BrdfCheck,
+            Call::SampleJacobian { sampler, .. } => sampler.task(),
         }
     }
 
@@ -202,6 +212,13 @@ impl Call {
                 let f = |wi: Vec3, wo: Vec3| brdf.eval(wi, wo);
                 let mut sampler = Sampler::new(*seed, 0);
                 t.brdf_check(&f, &mut sampler, *samples).into_output()
+            }
+            Call::SampleJacobian { sampler, points, h } => {
+                let ratios = points
+                    .iter()
+                    .map(|&u| sampler.jacobian_times_pdf(t, u, *h).unwrap_or(f64::NAN))
+                    .collect();
+                Output::Numbers(ratios)
             }
         }
     }
@@ -545,6 +562,12 @@ impl fmt::Display for Call {
                 "brdf_check({}, samples={samples}, seed={seed})",
                 brdf.describe()
             ),
+            Call::SampleJacobian { sampler, points, h } => write!(
+                f,
+                "{sampler}: solid angle per unit area × pdf at {} points (step {})",
+                points.len(),
+                n(*h)
+            ),
         }
     }
 }
@@ -594,6 +617,21 @@ impl SampleCall {
                 alpha_y,
             } => t.ndf_pdf(*wo, w, *alpha_x, *alpha_y),
         }
+    }
+
+    /// The solid angle the sampler's directions sweep per unit area of the square at `u`
+    /// (central differences of step `h`), times its pdf at the direction: 1 where the warp
+    /// follows the pdf. `None` where the sampler rejects at `u` or a neighbour.
+    pub fn jacobian_times_pdf(&self, t: &impl Tasks, u: glam::Vec2, h: f32) -> Option<f64> {
+        let at = |du: f32, dv: f32| {
+            self.sample(t, u + glam::Vec2::new(du, dv))
+                .map(|w| w.as_dvec3())
+        };
+        let (xp, xm, yp, ym) = (at(h, 0.0)?, at(-h, 0.0)?, at(0.0, h)?, at(0.0, -h)?);
+        let w = self.sample(t, u)?;
+        let step = 2.0 * h as f64;
+        let swept = ((xp - xm) / step).cross((yp - ym) / step).length();
+        Some(swept * self.pdf(t, w) as f64)
     }
 
     /// True when the sampler may return `None`.

@@ -42,6 +42,16 @@ pub enum Rule {
         /// Relative tolerance on `max_albedo`, for BRDFs whose albedo is a constant.
         albedo: Option<f64>,
     },
+    /// A list of ratios that should be 1 (a sampler's Jacobian times its pdf): at least
+    /// `share` of the finite ones within `tolerance` of 1, and at least half finite (seams
+    /// of a warp and its singular points spoil a few finite differences; a distorted warp
+    /// spoils most).
+    Unity {
+        /// Largest accepted |ratio − 1|.
+        tolerance: f64,
+        /// Smallest share of finite ratios within the tolerance.
+        share: f64,
+    },
 }
 
 impl Rule {
@@ -95,8 +105,43 @@ impl ValueCase {
                 }
             }
             Rule::Plausibility { albedo } => judge_plausibility(got, &self.expected, albedo),
+            Rule::Unity { tolerance, share } => judge_unity(got, tolerance, share),
         }
     }
+}
+
+/// Judges a list of ratios that should be 1 (see [`Rule::Unity`]).
+fn judge_unity(got: &Output, tolerance: f64, share: f64) -> Result<Error, String> {
+    let Output::Numbers(ratios) = got else {
+        return Err(format!("got {got}, expected a list of ratios"));
+    };
+    let finite: Vec<f64> = ratios.iter().copied().filter(|r| r.is_finite()).collect();
+    if finite.len() * 2 < ratios.len() {
+        return Err(format!(
+            "the sampler rejected or failed at {} of {} points",
+            ratios.len() - finite.len(),
+            ratios.len()
+        ));
+    }
+    let mut sorted = finite.clone();
+    sorted.sort_by(f64::total_cmp);
+    let median = sorted[sorted.len() / 2];
+    let within = finite
+        .iter()
+        .filter(|r| (*r - 1.0).abs() <= tolerance)
+        .count();
+    if (within as f64) < share * finite.len() as f64 {
+        return Err(format!(
+            "the solid angle the warp sweeps times the pdf is 1 at only {within} of {} points \
+             (median {}): the directions do not follow the pdf",
+            finite.len(),
+            fmt_num(median)
+        ));
+    }
+    Ok(Error {
+        abs: (median - 1.0).abs(),
+        rel: (median - 1.0).abs(),
+    })
 }
 
 /// One plausibility condition of a report field: which values satisfy it, and its name

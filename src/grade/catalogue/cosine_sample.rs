@@ -2,7 +2,7 @@
 
 use super::polygon::{hits_rectangle, projected_solid_angle};
 use super::{CaseInput, EstimatorSpec};
-use crate::grade::call::Call;
+use crate::grade::call::{Call, SampleCall};
 use crate::grade::domain::{COS_BOUNDARIES, Draw, Param, Spread, cos_z};
 use crate::grade::power::Declared;
 use crate::sampling::Sampler;
@@ -25,26 +25,44 @@ pub fn fixed() -> Vec<CaseInput> {
         pdf("45°", Vec3::new(0.0, 1.0, 1.0).normalize()),
         pdf("grazing", Vec3::X),
         pdf("below the surface", Vec3::new(0.6, 0.0, -0.8)),
+        super::jacobian_case("the warp follows cosine_pdf", SampleCall::CosineSample),
     ]
 }
 
-/// The declared domain of `cosine_pdf(w)`: any unit direction, 0 below the horizon.
-pub const DOMAIN: &[Param] = &[Param {
-    function: "cosine_pdf",
-    name: "cos θ of w",
-    covers: &["w"],
-    value: |c| match c {
-        Call::CosinePdf { w } => Some(cos_z(*w)),
+/// The Jacobian case: a uniform point of the square, away from its edges.
+const JACOBIAN: Param = Param::new(
+    "sample_jacobian",
+    "u",
+    &["sampler", "points", "h"],
+    |c| match c {
+        Call::SampleJacobian { points, .. } => Some(points.len() as f64),
         _ => None,
     },
-    lo: -1.0,
-    hi: 1.0,
-    spread: Spread::Linear,
-    boundaries: COS_BOUNDARIES,
-    special: &[],
-    resolution: 1e-7,
-    on_boundaries: true,
-}];
+    1.0,
+    1e4,
+);
+
+/// The declared domain of `cosine_pdf(w)`: any unit direction, 0 below the horizon; and of
+/// `cosine_sample(u)`: any point of the unit square.
+pub const DOMAIN: &[Param] = &[
+    Param {
+        function: "cosine_pdf",
+        name: "cos θ of w",
+        covers: &["w"],
+        value: |c| match c {
+            Call::CosinePdf { w } => Some(cos_z(*w)),
+            _ => None,
+        },
+        lo: -1.0,
+        hi: 1.0,
+        spread: Spread::Linear,
+        boundaries: COS_BOUNDARIES,
+        special: &[],
+        resolution: 1e-7,
+        on_boundaries: true,
+    },
+    JACOBIAN,
+];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);

@@ -77,6 +77,35 @@ impl CaseInput {
     }
 }
 
+/// The Jacobian cases of a sampler (see [`Call::SampleJacobian`]): 400 points spread over
+/// the square away from its edges, a finite-difference step of 1e-3 (its truncation and
+/// rounding stay near 1e-4), judged to 2e-3 at 90 % of the points, so that a warp 1 % off
+/// its pdf fails while a correct warp with seams (a concentric map) passes.
+pub fn jacobian_case(name: &str, sampler: SampleCall) -> CaseInput {
+    /// Points per case.
+    const POINTS: usize = 400;
+    let mut s = Sampler::new(PUBLIC_SEED, 0x6a61_636f_6269);
+    let points = (0..POINTS)
+        .map(|_| glam::Vec2::new(0.02, 0.02) + 0.96 * s.next_2d())
+        .collect();
+    CaseInput::new(
+        name,
+        Call::SampleJacobian {
+            sampler,
+            points,
+            h: 1e-3,
+        },
+    )
+    .rule(Rule::Unity {
+        tolerance: 2e-3,
+        share: 0.9,
+    })
+    .note(
+        "the solid angle a warp sweeps per unit area of the square is 1/pdf: sample the \
+         density your pdf returns",
+    )
+}
+
 /// Random cases per task in the public data (stored, so the handout grades without the
 /// reference).
 pub const PUBLIC_RANDOM: usize = 256;

@@ -67,6 +67,9 @@ pub fn fixed() -> Vec<CaseInput> {
             0.3,
         )
         .note(BELOW),
+        super::jacobian_case("the warp follows ndf_pdf at setup 1", setups()[0].clone()),
+        super::jacobian_case("the warp follows ndf_pdf at setup 2", setups()[1].clone()),
+        super::jacobian_case("the warp follows ndf_pdf at setup 3", setups()[2].clone()),
     ]
 }
 
@@ -110,6 +113,17 @@ pub const DOMAIN: &[Param] = &[
     anisotropy("ndf_pdf", &["alpha_x", "alpha_y"], |c| {
         of(c).and_then(|x| ratio(x.2, x.3))
     }),
+    Param::new(
+        "sample_jacobian",
+        "u",
+        &["sampler", "points", "h"],
+        |c| match c {
+            Call::SampleJacobian { points, .. } => Some(points.len() as f64),
+            _ => None,
+        },
+        1.0,
+        1e4,
+    ),
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
