@@ -1,5 +1,6 @@
-//! The estimators of `path_trace`: closed furnaces whose radiance is known in closed form,
-//! in the configurations where Russian roulette can go wrong (a survival probability that
+//! The estimators of `path_trace`: closed furnaces whose radiance is known in closed form
+//! (also around lossless glass and mirror objects, which a correct tracer renders
+//! invisible), in the configurations where Russian roulette can go wrong (a survival probability that
 //! is exactly 1/2 hides an inverted test; a bounce weight above 1 needs the probability
 //! capped), and a floor under a sky, where a path that escapes after a bounce must not add
 //! the sky that `mis` already counted.
@@ -28,6 +29,14 @@ const EMISSION: f64 = 1.0;
 /// radiance [`EMISSION`]: every point inside sees `Le Σ_{k<D} ρ^k` for paths of at most
 /// `D` segments, `Le / (1 − ρ)` unbounded.
 fn furnace(albedo: f64, render: &str) -> Scene {
+    furnace_around(albedo, render, None)
+}
+
+/// [`furnace`] with a sphere of the lossless material `material` (YAML) inside, off the
+/// centre: a lossless object in a uniform radiance field reflects and transmits that same
+/// radiance, so the field stays `Le / (1 − ρ)` everywhere outside it, whatever its BSDF
+/// (the furnace test of delta and refractive lobes).
+fn furnace_around(albedo: f64, render: &str, inside: Option<&str>) -> Scene {
     let walls = [
         "[-1, -1, -1], edge1: [0, 0, 2], edge2: [2, 0, 0]",
         "[-1, 1, -1], edge1: [2, 0, 0], edge2: [0, 0, 2]",
@@ -41,8 +50,14 @@ fn furnace(albedo: f64, render: &str) -> Scene {
 render: {render}
 materials:
   wall: {{diffuse: {{albedo: {albedo}}}}}
-shapes:
-"
+{object}shapes:
+{sphere}",
+        object = inside.map_or(String::new(), |m| format!("  object: {m}\n")),
+        sphere = if inside.is_some() {
+            "  - sphere: {center: [0, 0, -0.5], radius: 0.4, material: object}\n"
+        } else {
+            ""
+        },
     );
     for wall in walls {
         text += &format!("  - quad: {{origin: {wall}, material: wall, emission: {EMISSION}}}\n");
@@ -112,6 +127,22 @@ fn furnace_spec<'a, T: Tasks>(
     }
 }
 
+/// A path from the centre of a furnace with a lossless sphere of `material` inside.
+fn lossless_spec<'a, T: Tasks>(t: &'a T, name: &str, material: &str) -> EstimatorSpec<'a> {
+    let render = "{spp: 1, max_depth: ~, rr_depth: 1, strategy: mis, heuristic: power, seed: 0}";
+    EstimatorSpec {
+        name: name.into(),
+        analytic: EMISSION / (1.0 - 0.5),
+        samples: 40_000,
+        estimate: path_estimator(
+            t,
+            furnace_around(0.5, render, Some(material)),
+            Vec3::ZERO,
+            |s| uniform_sphere(s.next_2d()),
+        ),
+    }
+}
+
 /// `Le Σ_{k<segments} ρ^k`.
 fn bounded(albedo: f64, segments: i32) -> f64 {
     (0..segments).map(|k| EMISSION * albedo.powi(k)).sum()
@@ -156,6 +187,16 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
             1.25,
             &roulette("4"),
             bounded(1.25, 4),
+        ),
+        lossless_spec(
+            t,
+            "white furnace Le/(1 − ρ), ρ = 0.5, around a glass sphere (lossless: invisible)",
+            "{dielectric: {ior: 1.5}}",
+        ),
+        lossless_spec(
+            t,
+            "white furnace Le/(1 − ρ), ρ = 0.5, around a perfect mirror sphere (invisible)",
+            "{mirror: {reflectance: 1}}",
         ),
         EstimatorSpec {
             // Four segments: the camera ray, the bounce off the floor, and two that escape.
