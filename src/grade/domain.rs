@@ -241,16 +241,21 @@ pub fn cos_between(a: Vec3, b: Vec3) -> f64 {
     a.dot(b) / (a.length() * b.length())
 }
 
+/// The horizon of a cosine (0).
+const HORIZON: Boundary = Boundary {
+    at: 0.0,
+    what: "the horizon",
+};
+/// The pole of a cosine (1).
+const NORMAL: Boundary = Boundary {
+    at: 1.0,
+    what: "the normal",
+};
+
 /// Boundaries of a cosine over [−1, 1]: the horizon and both poles.
 pub const COS_BOUNDARIES: &[Boundary] = &[
-    Boundary {
-        at: 0.0,
-        what: "the horizon",
-    },
-    Boundary {
-        at: 1.0,
-        what: "the normal",
-    },
+    HORIZON,
+    NORMAL,
     Boundary {
         at: -1.0,
         what: "straight below",
@@ -258,16 +263,7 @@ pub const COS_BOUNDARIES: &[Boundary] = &[
 ];
 
 /// Boundaries of a cosine over [0, 1]: the horizon and the normal.
-pub const UPPER_COS_BOUNDARIES: &[Boundary] = &[
-    Boundary {
-        at: 0.0,
-        what: "the horizon",
-    },
-    Boundary {
-        at: 1.0,
-        what: "the normal",
-    },
-];
+pub const UPPER_COS_BOUNDARIES: &[Boundary] = &[HORIZON, NORMAL];
 
 /// Where the spread of a roughness starts: below it lie the bands of the mirror limit.
 pub const ROUGHNESS_SPREAD: Spread = Spread::Log {
@@ -336,6 +332,90 @@ pub const fn anisotropy(
         .resolution(1e-6)
 }
 
+/// The length of a vector the text lets be any non-zero length: [1e-2, 1e2], log-spread,
+/// with unit length named.
+pub const fn length(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, 1e-2, 1e2)
+        .spread(Spread::Log {
+            from: 1e-2,
+            to: 1e2,
+        })
+        .special(&[1.0])
+        .resolution(1e-6)
+}
+
+/// A colour channel (of `kd`, `ks`, `f0`) in [0, 1], with 0 and 1 named.
+pub const fn channel(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, 0.0, 1.0).special(&[0.0, 1.0])
+}
+
+/// A lobe exponent ≥ 0 that need not be an integer, log-spread from `from`; its boundary
+/// 0 is left open (the clamped `0^0` may be 1, or the lobe skipped).
+pub const fn exponent(
+    function: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+    from: f64,
+) -> Param {
+    Param::new(function, "exponent", covers, value, 0.0, 1000.0)
+        .spread(Spread::Log { from, to: 200.0 })
+        .boundaries(&[Boundary {
+            at: 0.0,
+            what: "an exponent of 0 (the clamped 0^0)",
+        }])
+        .resolution(1e-6)
+        .open()
+}
+
+/// The declarations of a microfacet function of `(wo, wi, alpha_x, alpha_y)` named
+/// `$function`, whose inputs `$of` reads off a call: both cosines over [−1, 1],
+/// `cos(wo, wi)` with `wo = −wi` (no half vector) as boundary, both roughnesses and their
+/// anisotropy. [`Draw::microfacet`] draws from them.
+#[macro_export]
+macro_rules! microfacet_domain {
+    ($function:literal, $of:path) => {
+        [
+            $crate::grade::domain::cosine($function, "cos θo", &["wo"], |c| {
+                $of(c).map(|x| $crate::grade::domain::cos_z(x.0))
+            }),
+            $crate::grade::domain::cosine($function, "cos θi", &["wi"], |c| {
+                $of(c).map(|x| $crate::grade::domain::cos_z(x.1))
+            }),
+            $crate::grade::domain::Param::new(
+                $function,
+                "cos(wo, wi)",
+                &["wo", "wi"],
+                |c| $of(c).map(|x| $crate::grade::domain::cos_between(x.0, x.1)),
+                -1.0,
+                1.0,
+            )
+            .boundaries(&[$crate::grade::domain::Boundary {
+                at: -1.0,
+                what: "wo = −wi (no half vector)",
+            }]),
+            $crate::grade::domain::roughness($function, "alpha_x", &["alpha_x"], |c| {
+                $of(c).map(|x| x.2 as f64)
+            }),
+            $crate::grade::domain::roughness($function, "alpha_y", &["alpha_y"], |c| {
+                $of(c).map(|x| x.3 as f64)
+            }),
+            $crate::grade::domain::anisotropy($function, &["alpha_x", "alpha_y"], |c| {
+                $of(c).and_then(|x| $crate::grade::domain::ratio(x.2, x.3))
+            }),
+        ]
+    };
+}
+
 /// `a/b`, or `None` when either is 0 (the anisotropy of a mirror is not defined).
 pub fn ratio(a: f32, b: f32) -> Option<f64> {
     (a != 0.0 && b != 0.0).then(|| a as f64 / b as f64)
@@ -353,6 +433,22 @@ impl Draw<'_> {
         let r = self.value(ratio);
         let ay = (ax / r).clamp(alpha.lo, alpha.hi);
         (ax as f32, ay as f32)
+    }
+
+    /// `(wo, wi, alpha_x, alpha_y)` from the declarations of [`microfacet_domain!`]: `wi`
+    /// aimed at `−wo` when `opposite`, else drawn on its own.
+    pub fn microfacet(&mut self, p: &[Param; 6], opposite: bool) -> (Vec3, Vec3, f32, f32) {
+        let cos_o = self.value(&p[0]);
+        let wo = self.direction_at(Vec3::Z, cos_o);
+        let wi = if opposite {
+            let c = self.value(&p[2]);
+            self.direction_at(wo, c)
+        } else {
+            let cos_i = self.value(&p[1]);
+            self.direction_at(Vec3::Z, cos_i)
+        };
+        let (ax, ay) = self.alpha_pair(&p[3], &p[5]);
+        (wo, wi, ax, ay)
     }
 
     /// An RGB colour with channels in `[lo, hi]`: a grey from `channel` a quarter of the

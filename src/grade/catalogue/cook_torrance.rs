@@ -2,9 +2,7 @@
 
 use super::CaseInput;
 use crate::grade::call::Call;
-use crate::grade::domain::{
-    Boundary, Draw, Param, anisotropy, cos_between, cos_z, cosine, ratio, roughness,
-};
+use crate::grade::domain::{Draw, Param, channel};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -99,78 +97,54 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-/// The value of a Cook-Torrance call, for the declarations below.
-fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32, Vec3)> {
+/// The microfacet inputs of a Cook-Torrance call.
+fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     match c {
         Call::CookTorrance {
             wo,
             wi,
             alpha_x,
             alpha_y,
-            f0,
-        } => Some((*wo, *wi, *alpha_x, *alpha_y, *f0)),
+            ..
+        } => Some((*wo, *wi, *alpha_x, *alpha_y)),
         _ => None,
     }
 }
+
+/// The declarations of the microfacet pair.
+const PAIR: [Param; 6] = crate::microfacet_domain!("cook_torrance", of);
 
 /// The declared domain of `cook_torrance(wo, wi, alpha_x, alpha_y, f0)`: unit local
 /// directions anywhere (0 at or below the horizon, never NaN, also for `wo ≈ −wi`),
 /// roughnesses from 0 to 1 along local x and y, and an RGB `f0` in [0, 1] (1 for the
 /// renderer's metals).
 pub const DOMAIN: &[Param] = &[
-    cosine("cook_torrance", "cos θo", &["wo"], |c| {
-        of(c).map(|x| cos_z(x.0))
-    }),
-    cosine("cook_torrance", "cos θi", &["wi"], |c| {
-        of(c).map(|x| cos_z(x.1))
-    }),
-    Param::new(
-        "cook_torrance",
-        "cos(wo, wi)",
-        &["wo", "wi"],
-        |c| of(c).map(|x| cos_between(x.0, x.1)),
-        -1.0,
-        1.0,
-    )
-    .boundaries(&[Boundary {
-        at: -1.0,
-        what: "wo = −wi (no half vector)",
-    }]),
-    roughness("cook_torrance", "alpha_x", &["alpha_x"], |c| {
-        of(c).map(|x| x.2 as f64)
-    }),
-    roughness("cook_torrance", "alpha_y", &["alpha_y"], |c| {
-        of(c).map(|x| x.3 as f64)
-    }),
-    anisotropy("cook_torrance", &["alpha_x", "alpha_y"], |c| {
-        of(c).and_then(|x| ratio(x.2, x.3))
-    }),
-    Param::new(
-        "cook_torrance",
-        "largest channel of f0",
-        &["f0"],
-        |c| of(c).map(|x| x.4.max_element() as f64),
-        0.0,
-        1.0,
-    )
+    PAIR[0],
+    PAIR[1],
+    PAIR[2],
+    PAIR[3],
+    PAIR[4],
+    PAIR[5],
+    channel("cook_torrance", "largest channel of f0", &["f0"], |c| {
+        f0_of(c).map(|f0| f0.max_element() as f64)
+    })
     .special(&[0.0, 0.04, 1.0]),
 ];
+
+/// The `f0` of a Cook-Torrance call.
+fn f0_of(c: &Call) -> Option<Vec3> {
+    match c {
+        Call::CookTorrance { f0, .. } => Some(*f0),
+        _ => None,
+    }
+}
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);
     (0..count)
         .map(|i| {
-            let cos_o = d.value(&DOMAIN[0]);
-            let wo = d.direction_at(Vec3::Z, cos_o);
-            // One case in eight aims wi at −wo, the rest draw it on its own.
-            let wi = if i % 8 == 3 {
-                let c = d.value(&DOMAIN[2]);
-                d.direction_at(wo, c)
-            } else {
-                let cos_i = d.value(&DOMAIN[1]);
-                d.direction_at(Vec3::Z, cos_i)
-            };
-            let (ax, ay) = d.alpha_pair(&DOMAIN[3], &DOMAIN[5]);
+            // One case in eight aims wi at −wo.
+            let (wo, wi, ax, ay) = d.microfacet(&PAIR, i % 8 == 3);
             let f0 = d.colour(&DOMAIN[6]);
             let below = wo.z.min(wi.z) <= 0.0;
             ct("", wo, wi, ax, ay, f0).note(if below { BELOW } else { CT })

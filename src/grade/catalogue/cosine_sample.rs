@@ -3,7 +3,7 @@
 use super::polygon::{hits_rectangle, projected_solid_angle};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::{Call, SampleCall};
-use crate::grade::domain::{COS_BOUNDARIES, Draw, Param, Spread, cos_z};
+use crate::grade::domain::{Draw, Param, cos_z, cosine};
 use crate::grade::power::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
@@ -29,39 +29,14 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-/// The Jacobian case: a uniform point of the square, away from its edges.
-const JACOBIAN: Param = Param::new(
-    "sample_jacobian",
-    "u",
-    &["sampler", "points", "h"],
-    |c| match c {
-        Call::SampleJacobian { points, .. } => Some(points.len() as f64),
-        _ => None,
-    },
-    1.0,
-    1e4,
-);
-
 /// The declared domain of `cosine_pdf(w)`: any unit direction, 0 below the horizon; and of
 /// `cosine_sample(u)`: any point of the unit square.
 pub const DOMAIN: &[Param] = &[
-    Param {
-        function: "cosine_pdf",
-        name: "cos θ of w",
-        covers: &["w"],
-        value: |c| match c {
-            Call::CosinePdf { w } => Some(cos_z(*w)),
-            _ => None,
-        },
-        lo: -1.0,
-        hi: 1.0,
-        spread: Spread::Linear,
-        boundaries: COS_BOUNDARIES,
-        special: &[],
-        resolution: 1e-7,
-        on_boundaries: true,
-    },
-    JACOBIAN,
+    cosine("cosine_pdf", "cos θ of w", &["w"], |c| match c {
+        Call::CosinePdf { w } => Some(cos_z(*w)),
+        _ => None,
+    }),
+    super::JACOBIAN,
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {

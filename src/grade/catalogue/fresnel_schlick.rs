@@ -1,9 +1,9 @@
 //! Cases of `schlick_r0` and `fresnel_schlick`.
 
 use super::CaseInput;
-use super::indices::{CRITICAL_ANGLE, EQUAL_INDICES, eta_pair, sin2_t};
+use super::indices::{ETA, critical, eta_pair, index_ratio, sin2_t};
 use crate::grade::call::Call;
-use crate::grade::domain::{Draw, Param, Spread, UPPER_COS_BOUNDARIES};
+use crate::grade::domain::{Draw, Param, UPPER_COS_BOUNDARIES};
 use crate::sampling::Sampler;
 
 const R0: &str = "R0 = ((η_i − η_t)/(η_i + η_t))²";
@@ -93,90 +93,45 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-/// Indices of refraction the grader draws: air to diamond.
-const ETA: (f64, f64) = (1.0, 2.42);
-
 /// The declared domain of `schlick_r0(eta_i, eta_t)` and
 /// `fresnel_schlick(cos_theta_i, eta_i, eta_t)`: indices from air to diamond, either way
 /// round and equal; a cosine in [0, 1] that rounding may push to `1 + 1e-7`; the critical
 /// angle when going to a less dense medium.
 pub const DOMAIN: &[Param] = &[
-    Param {
-        function: "schlick_r0",
-        name: "η_i/η_t",
-        covers: &["eta_i", "eta_t"],
-        value: |c| match c {
-            Call::SchlickR0 { eta_i, eta_t } => Some(*eta_i as f64 / *eta_t as f64),
-            _ => None,
-        },
-        lo: ETA.0 / ETA.1,
-        hi: ETA.1 / ETA.0,
-        spread: Spread::Log {
-            from: ETA.0 / ETA.1,
-            to: ETA.1 / ETA.0,
-        },
-        boundaries: EQUAL_INDICES,
-        special: &[],
-        resolution: 1e-6,
-        on_boundaries: true,
-    },
-    Param {
-        function: "fresnel_schlick",
-        name: "η_i/η_t",
-        covers: &["eta_i", "eta_t"],
-        value: |c| match c {
+    index_ratio("schlick_r0", "η_i/η_t", &["eta_i", "eta_t"], |c| match c {
+        Call::SchlickR0 { eta_i, eta_t } => Some(*eta_i as f64 / *eta_t as f64),
+        _ => None,
+    }),
+    index_ratio(
+        "fresnel_schlick",
+        "η_i/η_t",
+        &["eta_i", "eta_t"],
+        |c| match c {
             Call::FresnelSchlick { eta_i, eta_t, .. } => Some(*eta_i as f64 / *eta_t as f64),
             _ => None,
         },
-        lo: ETA.0 / ETA.1,
-        hi: ETA.1 / ETA.0,
-        spread: Spread::Log {
-            from: ETA.0 / ETA.1,
-            to: ETA.1 / ETA.0,
-        },
-        boundaries: EQUAL_INDICES,
-        special: &[],
-        resolution: 1e-6,
-        on_boundaries: true,
-    },
-    Param {
-        function: "fresnel_schlick",
-        name: "cos_theta_i",
-        covers: &["cos_theta_i"],
-        value: |c| match c {
+    ),
+    Param::new(
+        "fresnel_schlick",
+        "cos_theta_i",
+        &["cos_theta_i"],
+        |c| match c {
             Call::FresnelSchlick { cos_theta_i, .. } => Some(*cos_theta_i as f64),
             _ => None,
         },
-        lo: 0.0,
-        hi: 1.000_000_2,
-        spread: Spread::Linear,
-        boundaries: UPPER_COS_BOUNDARIES,
-        special: &[1.000_000_1],
-        resolution: 1e-7,
-        on_boundaries: true,
-    },
-    Param {
-        function: "fresnel_schlick",
-        name: "sin²θt",
-        covers: &[],
-        value: |c| match c {
-            Call::FresnelSchlick {
-                cos_theta_i,
-                eta_i,
-                eta_t,
-            } => Some(sin2_t(*cos_theta_i as f64, *eta_i as f64 / *eta_t as f64)),
-            _ => None,
-        },
-        lo: 0.0,
-        hi: (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
-        spread: Spread::Linear,
-        boundaries: CRITICAL_ANGLE,
-        special: &[],
-        resolution: 1e-5,
-        // On the critical angle itself `cos θt` is 0 or a few 1e-4, as rounding falls, and
-        // Schlick's curve is steep there: `≥` and `>` are both right.
-        on_boundaries: false,
-    },
+        0.0,
+        1.000_000_2,
+    )
+    .boundaries(UPPER_COS_BOUNDARIES)
+    .special(&[1.000_000_1]),
+    critical("fresnel_schlick", "sin²θt", &[], |c| match c {
+        Call::FresnelSchlick {
+            cos_theta_i,
+            eta_i,
+            eta_t,
+        } => Some(sin2_t(*cos_theta_i as f64, *eta_i as f64 / *eta_t as f64)),
+        _ => None,
+    }),
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {

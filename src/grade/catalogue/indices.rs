@@ -1,7 +1,50 @@
 //! Declarations and draws shared by the tasks with refractive indices (`refract_stack`,
 //! `fresnel_schlick`).
 
-use crate::grade::domain::{Boundary, Draw, Param};
+use crate::grade::call::Call;
+use crate::grade::domain::{Boundary, Draw, Param, Spread};
+
+/// Indices of refraction the grader draws: air to diamond.
+pub const ETA: (f64, f64) = (1.0, 2.42);
+
+/// A ratio of two indices drawn from [`ETA`], `η_i/η_t` (or of neighbours), with equal
+/// indices (no interface) as its boundary.
+pub const fn index_ratio(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(function, name, covers, value, ETA.0 / ETA.1, ETA.1 / ETA.0)
+        .spread(Spread::Log {
+            from: ETA.0 / ETA.1,
+            to: ETA.1 / ETA.0,
+        })
+        .boundaries(EQUAL_INDICES)
+        .resolution(1e-6)
+}
+
+/// `sin²θt` (or its largest over a stack's media) for indices from [`ETA`], with the
+/// critical angle as its boundary. Left open: on the critical angle itself, `≥` and `>`
+/// are both right in f32, and `cos θt` is 0 or a few 1e-4 as rounding falls.
+pub const fn critical(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    Param::new(
+        function,
+        name,
+        covers,
+        value,
+        0.0,
+        (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
+    )
+    .boundaries(CRITICAL_ANGLE)
+    .resolution(1e-5)
+    .open()
+}
 
 /// The boundary of a ratio of indices at 1: equal indices, no interface.
 pub const EQUAL_INDICES: &[Boundary] = &[Boundary {

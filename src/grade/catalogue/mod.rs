@@ -77,6 +77,20 @@ impl CaseInput {
     }
 }
 
+/// The declaration of a sampler's Jacobian case: points of the unit square (its one input,
+/// `u`, is any point of the square).
+pub const JACOBIAN: Param = Param::new(
+    "sample_jacobian",
+    "u",
+    &["sampler", "points", "h"],
+    |c| match c {
+        Call::SampleJacobian { points, .. } => Some(points.len() as f64),
+        _ => None,
+    },
+    1.0,
+    1e4,
+);
+
 /// The Jacobian cases of a sampler (see [`Call::SampleJacobian`]): 400 points spread over
 /// the square away from its edges, a finite-difference step of 1e-3 (its truncation and
 /// rounding stay near 1e-4), judged to 2e-3 at 90 % of the points, so that a warp 1 % off

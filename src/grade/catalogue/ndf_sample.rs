@@ -5,9 +5,7 @@ use super::cosine_sample::{QUAD_X, QUAD_Y, QUAD_Z, quad};
 use super::polygon::{hits_rectangle, projected_solid_angle};
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::{Call, SampleCall};
-use crate::grade::domain::{
-    Boundary, Draw, Param, anisotropy, cos_between, cos_z, cosine, ratio, roughness,
-};
+use crate::grade::domain::{Draw, Param};
 use crate::grade::power::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
@@ -85,61 +83,29 @@ fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     }
 }
 
+/// The declarations of the microfacet pair.
+const PAIR: [Param; 6] = crate::microfacet_domain!("ndf_pdf", of);
+
 /// The declared domain of `ndf_pdf(wo, wi, alpha_x, alpha_y)`: finite and non-negative for
 /// every input: unit local directions anywhere (0 where the sampler cannot produce `wi`:
 /// `wi` at or below the horizon, `wo·h ≤ 0`, `wo ≈ −wi`), roughnesses from 0 (raised to
-/// `MIN_ALPHA`) to 1.
+/// `MIN_ALPHA`) to 1; and of `ndf_sample(wo, alpha_x, alpha_y, u)`: any point of the square.
 pub const DOMAIN: &[Param] = &[
-    cosine("ndf_pdf", "cos θo", &["wo"], |c| of(c).map(|x| cos_z(x.0))),
-    cosine("ndf_pdf", "cos θi", &["wi"], |c| of(c).map(|x| cos_z(x.1))),
-    Param::new(
-        "ndf_pdf",
-        "cos(wo, wi)",
-        &["wo", "wi"],
-        |c| of(c).map(|x| cos_between(x.0, x.1)),
-        -1.0,
-        1.0,
-    )
-    .boundaries(&[Boundary {
-        at: -1.0,
-        what: "wo = −wi (no half vector)",
-    }]),
-    roughness("ndf_pdf", "alpha_x", &["alpha_x"], |c| {
-        of(c).map(|x| x.2 as f64)
-    }),
-    roughness("ndf_pdf", "alpha_y", &["alpha_y"], |c| {
-        of(c).map(|x| x.3 as f64)
-    }),
-    anisotropy("ndf_pdf", &["alpha_x", "alpha_y"], |c| {
-        of(c).and_then(|x| ratio(x.2, x.3))
-    }),
-    Param::new(
-        "sample_jacobian",
-        "u",
-        &["sampler", "points", "h"],
-        |c| match c {
-            Call::SampleJacobian { points, .. } => Some(points.len() as f64),
-            _ => None,
-        },
-        1.0,
-        1e4,
-    ),
+    PAIR[0],
+    PAIR[1],
+    PAIR[2],
+    PAIR[3],
+    PAIR[4],
+    PAIR[5],
+    super::JACOBIAN,
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);
     (0..count)
         .map(|i| {
-            let cos_o = d.value(&DOMAIN[0]);
-            let wo = d.direction_at(Vec3::Z, cos_o);
-            let wi = if i % 8 == 3 {
-                let c = d.value(&DOMAIN[2]);
-                d.direction_at(wo, c)
-            } else {
-                let cos_i = d.value(&DOMAIN[1]);
-                d.direction_at(Vec3::Z, cos_i)
-            };
-            let (ax, ay) = d.alpha_pair(&DOMAIN[3], &DOMAIN[5]);
+            // One case in eight aims wi at −wo.
+            let (wo, wi, ax, ay) = d.microfacet(&PAIR, i % 8 == 3);
             let case = pdf("", wo, wi, ax, ay);
             if wi.z <= 0.0 {
                 case.note(BELOW)

@@ -4,7 +4,7 @@ use super::CaseInput;
 use crate::bsdf::PhongParams;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
-use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, cos_z, cosine};
+use crate::grade::domain::{Boundary, Draw, Param, channel, cos_between, cos_z, cosine, exponent};
 use crate::grade::test_brdf::TestBrdf;
 use crate::grade::tolerance::Tolerance;
 use crate::sampling::Sampler;
@@ -125,9 +125,6 @@ fn mirror(wi: Vec3) -> Vec3 {
     Vec3::new(-wi.x, -wi.y, wi.z)
 }
 
-/// A colour channel of `kd` or `ks`: in [0, 1] (`kd + ks ≤ 1` conserves energy).
-const CHANNEL: (f64, f64) = (0.0, 1.0);
-
 /// The declared domain of `phong(wo, wi, params)` and `reciprocity_gap(brdf, sampler,
 /// pairs)`: unit local directions anywhere (0 at or below the horizon), `r·wo` from −1
 /// (clamped: a negative base to a fractional power is NaN) to 1 (the peak), channels of
@@ -154,43 +151,19 @@ pub const DOMAIN: &[Param] = &[
             what: "the peak of the lobe",
         },
     ]),
-    Param::new(
+    channel("phong", "largest channel of kd", &["params.kd"], |c| {
+        of(c).map(|x| x.2.kd.max_element() as f64)
+    }),
+    channel("phong", "largest channel of ks", &["params.ks"], |c| {
+        of(c).map(|x| x.2.ks.max_element() as f64)
+    }),
+    exponent(
         "phong",
-        "largest channel of kd",
-        &["params.kd"],
-        |c| of(c).map(|x| x.2.kd.max_element() as f64),
-        CHANNEL.0,
-        CHANNEL.1,
-    )
-    .special(&[0.0, 1.0]),
-    Param::new(
-        "phong",
-        "largest channel of ks",
-        &["params.ks"],
-        |c| of(c).map(|x| x.2.ks.max_element() as f64),
-        CHANNEL.0,
-        CHANNEL.1,
-    )
-    .special(&[0.0, 1.0]),
-    Param::new(
-        "phong",
-        "exponent",
         &["params.exponent"],
         |c| of(c).map(|x| x.2.exponent as f64),
-        0.0,
-        1000.0,
+        0.5,
     )
-    .spread(Spread::Log {
-        from: 0.5,
-        to: 200.0,
-    })
-    .boundaries(&[Boundary {
-        at: 0.0,
-        what: "n = 0 (the clamped 0^0 is 1)",
-    }])
-    .special(&[1.0, 2.0, 10.5])
-    .resolution(1e-6)
-    .open(),
+    .special(&[1.0, 2.0, 10.5]),
     Param::new(
         "reciprocity_gap",
         "pairs",

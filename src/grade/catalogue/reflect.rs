@@ -2,7 +2,7 @@
 
 use super::CaseInput;
 use crate::grade::call::Call;
-use crate::grade::domain::{Draw, Param, Spread, UPPER_COS_BOUNDARIES, cos_between};
+use crate::grade::domain::{Draw, Param, cos_between, length, upper_cosine};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -46,68 +46,23 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-/// Lengths of a vector the text allows without requiring unit length (`n`; and `wo`,
-/// whose length the result keeps).
-const LENGTH: (f64, f64) = (1e-2, 1e2);
-
 /// The declared domain of `reflect(wo, n)`: `wo` on the side `n` points to, from grazing to
 /// the normal; `n` any non-zero vector along the normal, and `wo` of any length (the
 /// result keeps it).
 pub const DOMAIN: &[Param] = &[
-    Param {
-        function: "reflect",
-        name: "cos(wo, n)",
-        covers: &["wo", "n"],
-        value: |c| match c {
-            Call::Reflect { wo, n } => Some(cos_between(*wo, *n)),
-            _ => None,
-        },
-        lo: 0.0,
-        hi: 1.0,
-        spread: Spread::Linear,
-        boundaries: UPPER_COS_BOUNDARIES,
-        special: &[],
-        resolution: 1e-7,
-        on_boundaries: true,
-    },
-    Param {
-        function: "reflect",
-        name: "|n|",
-        covers: &["n"],
-        value: |c| match c {
-            Call::Reflect { n, .. } => Some(n.length() as f64),
-            _ => None,
-        },
-        lo: LENGTH.0,
-        hi: LENGTH.1,
-        spread: Spread::Log {
-            from: LENGTH.0,
-            to: LENGTH.1,
-        },
-        boundaries: &[],
-        special: &[1.0, 2.0],
-        resolution: 1e-6,
-        on_boundaries: true,
-    },
-    Param {
-        function: "reflect",
-        name: "|wo|",
-        covers: &["wo"],
-        value: |c| match c {
-            Call::Reflect { wo, .. } => Some(wo.length() as f64),
-            _ => None,
-        },
-        lo: LENGTH.0,
-        hi: LENGTH.1,
-        spread: Spread::Log {
-            from: LENGTH.0,
-            to: LENGTH.1,
-        },
-        boundaries: &[],
-        special: &[1.0],
-        resolution: 1e-6,
-        on_boundaries: true,
-    },
+    upper_cosine("reflect", "cos(wo, n)", &["wo", "n"], |c| match c {
+        Call::Reflect { wo, n } => Some(cos_between(*wo, *n)),
+        _ => None,
+    }),
+    length("reflect", "|n|", &["n"], |c| match c {
+        Call::Reflect { n, .. } => Some(n.length() as f64),
+        _ => None,
+    })
+    .special(&[1.0, 2.0]),
+    length("reflect", "|wo|", &["wo"], |c| match c {
+        Call::Reflect { wo, .. } => Some(wo.length() as f64),
+        _ => None,
+    }),
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {

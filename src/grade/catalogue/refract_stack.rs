@@ -1,10 +1,10 @@
 //! Cases of `refract`, `critical_angle` and `refract_stack`.
 
 use super::CaseInput;
-use super::indices::{CRITICAL_ANGLE, EQUAL_INDICES, eta_pair, sin2_t};
+use super::indices::{ETA, critical, eta_pair, index_ratio, sin2_t};
 use crate::grade::call::{Call, StackInput};
 use crate::grade::case::Rule;
-use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, upper_cosine};
+use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, length, upper_cosine};
 use crate::grade::tolerance::Tolerance;
 use crate::sampling::Sampler;
 use glam::Vec3;
@@ -117,9 +117,6 @@ pub fn fixed() -> Vec<CaseInput> {
     ]
 }
 
-/// Indices of refraction the grader draws: air to diamond.
-const ETA: (f64, f64) = (1.0, 2.42);
-
 fn refract_of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     match c {
         Call::Refract {
@@ -172,46 +169,17 @@ pub const DOMAIN: &[Param] = &[
     upper_cosine("refract", "cos(wi, n)", &["wi", "n"], |c| {
         refract_of(c).map(|x| cos_between(x.0, x.1))
     }),
-    Param::new(
-        "refract",
-        "|n|",
-        &["n"],
-        |c| refract_of(c).map(|x| x.1.length() as f64),
-        1e-2,
-        1e2,
-    )
-    .spread(Spread::Log {
-        from: 1e-2,
-        to: 1e2,
+    length("refract", "|n|", &["n"], |c| {
+        refract_of(c).map(|x| x.1.length() as f64)
     })
-    .special(&[1.0, 2.0])
-    .resolution(1e-6),
-    Param::new(
-        "refract",
-        "η_i/η_t",
-        &["eta_i", "eta_t"],
-        |c| refract_of(c).map(|x| x.2 as f64 / x.3 as f64),
-        ETA.0 / ETA.1,
-        ETA.1 / ETA.0,
-    )
-    .spread(Spread::Log {
-        from: ETA.0 / ETA.1,
-        to: ETA.1 / ETA.0,
-    })
-    .boundaries(EQUAL_INDICES)
-    .resolution(1e-6),
-    Param::new(
-        "refract",
-        "sin²θt",
-        &[],
-        |c| refract_of(c).map(|x| sin2_t(cos_between(x.0, x.1), x.2 as f64 / x.3 as f64)),
-        0.0,
-        (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
-    )
-    .boundaries(CRITICAL_ANGLE)
-    .resolution(1e-5)
-    .open(),
-    Param::new(
+    .special(&[1.0, 2.0]),
+    index_ratio("refract", "η_i/η_t", &["eta_i", "eta_t"], |c| {
+        refract_of(c).map(|x| x.2 as f64 / x.3 as f64)
+    }),
+    critical("refract", "sin²θt", &[], |c| {
+        refract_of(c).map(|x| sin2_t(cos_between(x.0, x.1), x.2 as f64 / x.3 as f64))
+    }),
+    index_ratio(
         "critical_angle",
         "η_i/η_t",
         &["eta_i", "eta_t"],
@@ -219,15 +187,7 @@ pub const DOMAIN: &[Param] = &[
             Call::CriticalAngle { eta_i, eta_t } => Some(eta_i / eta_t),
             _ => None,
         },
-        ETA.0 / ETA.1,
-        ETA.1 / ETA.0,
-    )
-    .spread(Spread::Log {
-        from: ETA.0 / ETA.1,
-        to: ETA.1 / ETA.0,
-    })
-    .boundaries(EQUAL_INDICES)
-    .resolution(1e-6),
+    ),
     Param::new(
         "refract_stack",
         "θ (degrees)",
@@ -240,31 +200,18 @@ pub const DOMAIN: &[Param] = &[
         at: 0.0,
         what: "normal incidence",
     }]),
-    Param::new(
+    critical(
         "refract_stack",
         "largest sin²θ",
         &["stack.eta_incident", "stack.slabs", "stack.eta_exit"],
         |c| stack_of(c).map(|x| largest_sin2(x.0, x.1)),
-        0.0,
-        (ETA.1 / ETA.0) * (ETA.1 / ETA.0),
-    )
-    .boundaries(CRITICAL_ANGLE)
-    .resolution(1e-5)
-    .open(),
-    Param::new(
+    ),
+    index_ratio(
         "refract_stack",
         "neighbouring indices",
         &["stack.eta_incident", "stack.slabs", "stack.eta_exit"],
         |c| stack_of(c).map(|x| nearest_equal(x.1)),
-        ETA.0 / ETA.1,
-        ETA.1 / ETA.0,
-    )
-    .spread(Spread::Log {
-        from: ETA.0 / ETA.1,
-        to: ETA.1 / ETA.0,
-    })
-    .boundaries(EQUAL_INDICES)
-    .resolution(1e-6),
+    ),
     Param::new(
         "refract_stack",
         "slabs",
@@ -274,18 +221,10 @@ pub const DOMAIN: &[Param] = &[
         4.0,
     )
     .special(&[0.0, 1.0]),
-    Param::new(
-        "refract_stack",
-        "thickness",
-        &["stack.slabs"],
-        |c| stack_of(c).and_then(|x| x.1.slabs.iter().map(|s| s.1).min_by(|a, b| a.total_cmp(b))),
-        1e-2,
-        1e2,
-    )
-    .spread(Spread::Log {
-        from: 1e-2,
-        to: 1e2,
-    }),
+    length("refract_stack", "thickness", &["stack.slabs"], |c| {
+        stack_of(c).and_then(|x| x.1.slabs.iter().map(|s| s.1).min_by(|a, b| a.total_cmp(b)))
+    })
+    .special(&[]),
     Param::new(
         "refract_stack",
         "intensity",

@@ -2,9 +2,7 @@
 
 use super::CaseInput;
 use crate::grade::call::Call;
-use crate::grade::domain::{
-    COS_BOUNDARIES, Draw, Param, ROUGHNESS_BOUNDARIES, ROUGHNESS_SPREAD, Spread, cos_z,
-};
+use crate::grade::domain::{Draw, Param, cos_z, cosine, roughness};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -36,38 +34,14 @@ pub fn fixed() -> Vec<CaseInput> {
 /// The declared domain of `smith_g1(w, alpha)`: `w` any unit direction (below the horizon
 /// returns 0), `alpha` from 0 (a mirror, still finite) to 1 and beyond (very rough).
 pub const DOMAIN: &[Param] = &[
-    Param {
-        function: "smith_g1",
-        name: "cos θ of w",
-        covers: &["w"],
-        value: |c| match c {
-            Call::SmithG1 { w, .. } => Some(cos_z(*w)),
-            _ => None,
-        },
-        lo: -1.0,
-        hi: 1.0,
-        spread: Spread::Linear,
-        boundaries: COS_BOUNDARIES,
-        special: &[],
-        resolution: 1e-7,
-        on_boundaries: true,
-    },
-    Param {
-        function: "smith_g1",
-        name: "alpha",
-        covers: &["alpha"],
-        value: |c| match c {
-            Call::SmithG1 { alpha, .. } => Some(*alpha as f64),
-            _ => None,
-        },
-        lo: 0.0,
-        hi: 1.0,
-        spread: ROUGHNESS_SPREAD,
-        boundaries: ROUGHNESS_BOUNDARIES,
-        special: &[0.0, 1.0],
-        resolution: 1e-6,
-        on_boundaries: true,
-    },
+    cosine("smith_g1", "cos θ of w", &["w"], |c| match c {
+        Call::SmithG1 { w, .. } => Some(cos_z(*w)),
+        _ => None,
+    }),
+    roughness("smith_g1", "alpha", &["alpha"], |c| match c {
+        Call::SmithG1 { alpha, .. } => Some(*alpha as f64),
+        _ => None,
+    }),
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
