@@ -116,7 +116,8 @@ fn judge_unity(got: &Output, tolerance: f64, share: f64) -> Result<Error, String
         return Err(format!("got {got}, expected a list of ratios"));
     };
     let finite: Vec<f64> = ratios.iter().copied().filter(|r| r.is_finite()).collect();
-    if finite.len() * 2 < ratios.len() {
+    // A worker's outputs are untrusted data: an empty list is a failure, not a panic here.
+    if finite.is_empty() || finite.len() * 2 < ratios.len() {
         return Err(format!(
             "the sampler rejected or failed at {} of {} points",
             ratios.len() - finite.len(),
@@ -283,5 +284,27 @@ mod tests {
         );
         let e = c.judge(&report(0.16, 0.0, 0.8).into_output()).unwrap_err();
         assert!(e.contains("max_albedo = 0.8"), "{e}");
+    }
+
+    #[test]
+    fn unity_judges_ratios_and_refuses_an_empty_or_rejected_list() {
+        let c = ValueCase {
+            name: "jacobian".into(),
+            call: Call::CosinePdf { w: glam::Vec3::Z },
+            rule: Rule::Unity {
+                tolerance: 2e-3,
+                share: 0.9,
+            },
+            note: None,
+            expected: Output::Numbers(vec![1.0; 4]),
+        };
+        assert!(
+            c.judge(&Output::Numbers(vec![1.0, 1.001, 0.999, 1.0]))
+                .is_ok()
+        );
+        assert!(c.judge(&Output::Numbers(vec![1.01; 4])).is_err());
+        assert!(c.judge(&Output::Numbers(vec![])).is_err());
+        assert!(c.judge(&Output::Numbers(vec![f64::NAN; 4])).is_err());
+        assert!(c.judge(&Output::Number(1.0)).is_err());
     }
 }

@@ -40,7 +40,8 @@ pub struct Boundary {
 /// parameters.
 #[derive(Clone, Copy, Debug)]
 pub struct Param {
-    /// The task function (`smith_g1`, `refract`); [`Call::function`] names the same.
+    /// The task function (`smith_g1`, `refract`), as the `fn` tag of a call's stored form
+    /// names it.
     pub function: &'static str,
     /// The quantity, as a student reads it (`cos θ of w`, `alpha`, `η_i/η_t`).
     pub name: &'static str,
