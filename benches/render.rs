@@ -7,9 +7,8 @@
 //! - `raycast`: closest-hit rays through the scene layer and through obvhs directly, on the
 //!   same BVH and the same rays (a dense trefoil knot mesh); the ratio is printed.
 //!
-//! Run with `cargo bench --bench render`.
+//! Run with `cargo bench -p pbrlab-benches --bench render`.
 
-#[cfg(feature = "solutions")]
 mod render_benches {
     use criterion::{Criterion, Throughput, criterion_group};
     use pbrlab::render::raycast::{compare_with_obvhs, test_rays};
@@ -17,10 +16,9 @@ mod render_benches {
     use pbrlab::scene::{LoadOptions, Scene};
     use pbrlab_solutions::TASKS as Reference;
     use std::fmt::Write as _;
-    use std::path::Path;
 
     fn cornell(c: &mut Criterion) {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell.yaml");
+        let path = pbrlab::repository_root().join("scenes/cornell.yaml");
         let scene = Scene::load(&path, &LoadOptions::default()).expect("cornell");
         let s = scene.settings();
         assert_eq!(
@@ -125,11 +123,4 @@ mod render_benches {
     criterion_group!(benches, cornell, raycast);
 }
 
-#[cfg(feature = "solutions")]
 criterion::criterion_main!(render_benches::benches);
-
-/// Without the reference there is nothing to benchmark.
-#[cfg(not(feature = "solutions"))]
-fn main() {
-    eprintln!("the benchmarks render with the reference: build with the `solutions` feature");
-}

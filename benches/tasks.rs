@@ -4,7 +4,7 @@
 //! normalisation per input) is measured in the same run: quote the other figures as
 //! multiples of it, which survives a noisy, shared machine better than absolute times.
 //!
-//! `cargo bench --bench tasks` (add `-- reflect` to run the benchmarks whose name matches).
+//! `cargo bench -p pbrlab-benches --bench tasks` (add `-- reflect` to run the benchmarks whose name matches).
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{Vec2, Vec3};

@@ -1,6 +1,6 @@
 //! Embeds the grader's expected data (tests/snapshots/expected/*.snap, written from the
-//! reference by tests/instructor_expected.rs) and reference renders
-//! (tests/snapshots/renders/*.exr, written by tests/instructor_renders.rs) into the binary,
+//! reference by tests/instructor/expected.rs) and reference renders
+//! (tests/snapshots/renders/*.exr, written by tests/instructor/renders.rs) into the binary,
 //! so `pbrlab grade` needs no such files at run time and works in the student handout,
 //! which has no solutions.
 //!

@@ -1,5 +1,5 @@
 use super::study::Point;
-use anyhow::{Result, anyhow};
+use anyhow::{Context, Result, anyhow};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -65,12 +65,17 @@ const PALETTE: [RGBColor; 8] = [
 pub fn plot_error_vs_time(points: &[Point], title: &str, png: &Path, svg: &Path) -> Result<()> {
     ensure_font()?;
     let size = (900, 640);
+    // plotters draws into a buffer, and the framework's `image` writes the PNG: plotters'
+    // own encoder would compile a second, older `image`.
+    let mut rgb = vec![0u8; size.0 as usize * size.1 as usize * 3];
     draw(
-        BitMapBackend::new(png, size).into_drawing_area(),
+        BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area(),
         points,
         title,
     )
     .map_err(|e| anyhow!("drawing {}: {e}", png.display()))?;
+    image::save_buffer(png, &rgb, size.0, size.1, image::ExtendedColorType::Rgb8)
+        .with_context(|| format!("writing {}", png.display()))?;
     draw(
         SVGBackend::new(svg, size).into_drawing_area(),
         points,

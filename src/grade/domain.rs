@@ -3,7 +3,7 @@
 //! allowed, and the boundaries where the contract changes behaviour. Each task's
 //! catalogue file declares its own ([`super::catalogue`]); the value cases are drawn from
 //! them ([`Draw`]) with a bias toward the boundaries, and the boundary-mutation score
-//! (`tests/instructor_domain.rs`) makes a wrong variant of the reference for every band
+//! (`tests/instructor/domain.rs`) makes a wrong variant of the reference for every band
 //! declared here.
 
 use super::call::Call;

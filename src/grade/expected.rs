@@ -3,7 +3,7 @@
 //!
 //! # Storage
 //! One insta snapshot per task, `tests/snapshots/expected/<task>.snap`, whose body is the
-//! task's [`TaskData`] as JSON. The instructor test `tests/instructor_expected.rs` computes
+//! task's [`TaskData`] as JSON. The instructor test `tests/instructor/expected.rs` computes
 //! it from the reference ([`generate`]) and compares it with the stored file through a
 //! tolerance comparator, so a change in the reference beyond rounding fails CI until the
 //! snapshot is accepted (`INSTA_UPDATE=always`). `build.rs` embeds the files in the binary;
@@ -127,7 +127,7 @@ mod tests {
 
     #[test]
     fn the_snapshot_header_is_skipped() {
-        let text = "---\nsource: tests/instructor_expected.rs\n---\n{\"a\": 1}\n";
+        let text = "---\nsource: tests/instructor/expected.rs\n---\n{\"a\": 1}\n";
         assert_eq!(snapshot_body(text).unwrap(), "{\"a\": 1}\n");
         assert!(snapshot_body("{}").is_err());
     }

@@ -43,7 +43,7 @@ impl Launcher {
     /// student's code and the renderer, but no reference (it loads the libraries of the
     /// tasks a job takes from the reference, [`super::references`]) and not the grader's
     /// expected data or reference renders (nothing reachable from its `main` uses them, so
-    /// the linker leaves them out: `tests/instructor_hostile.rs` checks the file).
+    /// the linker leaves them out: `tests/instructor/hostile.rs` checks the file).
     pub fn current_exe() -> anyhow::Result<Self> {
         let program = worker_beside(&std::env::current_exe()?);
         anyhow::ensure!(

@@ -31,7 +31,7 @@ pub fn probe_scene() -> Scene {
         PROBE_SCENE,
         &LoadOptions::default(),
     )
-    .expect("the built-in probe scene is valid (tests/render_scenes.rs checks it)")
+    .expect("the built-in probe scene is valid (tests/instructor/render_scenes.rs checks it)")
 }
 
 /// Calls every function of `task` once on an ordinary input and discards the results.

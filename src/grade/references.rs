@@ -6,7 +6,7 @@
 //! build each task's reference is a library of its own, an example of
 //! `tools/reference-library/` built with cargo the first time a process needs one (a no-op
 //! when it is fresh); a job gets the libraries of the tasks it does not take from the
-//! student, never the graded task's (`tests/instructor_hostile.rs` checks the files). The
+//! student, never the graded task's (`tests/instructor/hostile.rs` checks the files). The
 //! student handout has only the whole compiled reference ([`crate::compiled_reference`]),
 //! which the student's own worker may load: there the student grades their own code.
 

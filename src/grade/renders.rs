@@ -6,7 +6,7 @@
 //! together. The reference renders are stored as EXR files (mean, and variance of the mean)
 //! in `tests/snapshots/renders/`, embedded at build time like the expected data, so the
 //! handout grades renders without solutions; the instructor test
-//! `tests/instructor_renders.rs` writes them and checks them against fresh reference renders.
+//! `tests/instructor/renders.rs` writes them and checks them against fresh reference renders.
 
 use super::checks::{ImageOutputs, Rendered};
 use super::image_check::{self, ImageStats};

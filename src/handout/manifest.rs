@@ -77,48 +77,71 @@ fn files_under(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) -> anyhow::Resul
 }
 
 /// Applies the rules for `tests/` to the candidate files under it.
+///
+/// A test target is a file `tests/<name>.rs` or a folder `tests/<name>/` with a `main.rs`
+/// and its modules. A target is kept unless its name starts with `instructor` or one of its
+/// files needs the reference. A folder that is not a target (support code of single-file
+/// targets) is kept when a kept target declares it (`mod <folder>;`). Of `tests/snapshots/`,
+/// the grader's data is kept, and the insta snapshots of kept single-file targets.
 fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<PathBuf>> {
     let tests = Path::new("tests");
-    let mut kept_targets = Vec::new();
+    // Each candidate's first component under tests/ (`name.rs` or a folder).
+    let top = |file: &Path| -> Option<String> {
+        let first = file.strip_prefix(tests).ok()?.components().next()?;
+        Some(first.as_os_str().to_string_lossy().into_owned())
+    };
+    let is_target = |first: &str| {
+        first.ends_with(".rs") || root.join(tests).join(first).join("main.rs").is_file()
+    };
+    let mut sources: std::collections::BTreeMap<String, Vec<String>> = Default::default();
     for file in &candidates {
-        if file.parent() == Some(tests) && file.extension().is_some_and(|e| e == "rs") {
-            let stem = file
-                .file_stem()
-                .unwrap_or_default()
-                .to_string_lossy()
-                .into_owned();
-            let text = std::fs::read_to_string(root.join(file))?;
-            if !stem.starts_with("instructor_") && !needs_solutions(&text) {
-                kept_targets.push((stem, text));
-            }
+        if let Some(first) = top(file)
+            && first != "snapshots"
+            && is_target(&first)
+            && file.extension().is_some_and(|e| e == "rs")
+        {
+            sources
+                .entry(first)
+                .or_default()
+                .push(std::fs::read_to_string(root.join(file))?);
         }
     }
+    let kept_targets: Vec<(String, Vec<String>)> = sources
+        .into_iter()
+        .filter(|(first, texts)| {
+            !first.starts_with("instructor") && !texts.iter().any(|t| needs_solutions(t))
+        })
+        .collect();
+    let kept_target = |first: &str| kept_targets.iter().any(|(t, _)| t == first);
     let uses_module = |module: &str| {
         kept_targets
             .iter()
-            .any(|(_, text)| text.contains(&format!("mod {module};")))
+            .flat_map(|(_, texts)| texts)
+            .any(|text| text.contains(&format!("mod {module};")))
     };
     Ok(candidates
         .into_iter()
         .filter(|file| {
-            let Ok(rel) = file.strip_prefix(tests) else {
+            let Some(first) = top(file) else {
                 return false;
             };
-            let mut parts = rel
-                .components()
-                .map(|c| c.as_os_str().to_string_lossy().into_owned());
-            let first = parts.next().unwrap_or_default();
-            match parts.next() {
-                None => kept_targets
-                    .iter()
-                    .any(|(stem, _)| format!("{stem}.rs") == first),
-                Some(second) if first == "snapshots" => {
-                    GRADER_DATA.contains(&second.as_str())
-                        || kept_targets
-                            .iter()
-                            .any(|(stem, _)| second.starts_with(&format!("{stem}__")))
-                }
-                Some(_) => !first.starts_with("instructor_") && uses_module(&first),
+            if first == "snapshots" {
+                let second = file
+                    .strip_prefix(tests.join("snapshots"))
+                    .ok()
+                    .and_then(|r| r.components().next())
+                    .map(|c| c.as_os_str().to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                return GRADER_DATA.contains(&second.as_str())
+                    || kept_targets.iter().any(|(t, _)| {
+                        t.strip_suffix(".rs")
+                            .is_some_and(|stem| second.starts_with(&format!("{stem}__")))
+                    });
+            }
+            if is_target(&first) {
+                kept_target(&first)
+            } else {
+                !first.starts_with("instructor") && uses_module(&first)
             }
         })
         .collect())
@@ -209,18 +232,15 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
     }
     let (tests, mut rest): (Vec<_>, Vec<_>) =
         files.into_iter().partition(|f| f.starts_with("tests"));
-    let mut kept_benches = Vec::new();
-    rest.retain(|f| {
-        if f.starts_with("benches") && f.extension().is_some_and(|e| e == "rs") {
-            let keep = std::fs::read_to_string(root.join(f)).is_ok_and(|t| !needs_solutions(&t));
-            if keep {
-                kept_benches.push(f.clone());
-            }
-            keep
-        } else {
-            true
-        }
+    // benches/ is one package: kept whole when none of its sources needs the reference.
+    let bench_needs_solutions = rest.iter().any(|f| {
+        f.starts_with("benches")
+            && f.extension().is_some_and(|e| e == "rs")
+            && std::fs::read_to_string(root.join(f)).is_ok_and(|t| needs_solutions(&t))
     });
+    if bench_needs_solutions {
+        rest.retain(|f| !f.starts_with("benches"));
+    }
     rest.extend(select_tests(root, tests)?);
     rest.sort();
     let cargo_path = root.join("Cargo.toml");

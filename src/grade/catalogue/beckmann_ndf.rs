@@ -9,7 +9,7 @@ use crate::worksheet::Tasks;
 use glam::Vec3;
 
 /// What the estimator and sampling checks of this task catch in at least 90 % of
-/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor/power.rs).
 pub const POWER: Declared = Declared {
     estimator_bias: Some(0.05),
     sampler_distortion: None,

@@ -24,7 +24,7 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 /// What the estimator and sampling checks of this task catch in at least 90 % of
-/// gradings, as measured by `pbrlab power` (asserted by tests/instructor_power.rs).
+/// gradings, as measured by `pbrlab power` (asserted by tests/instructor/power.rs).
 pub const POWER: Declared = Declared {
     estimator_bias: Some(0.005),
     sampler_distortion: None,

@@ -1,7 +1,6 @@
 //! False failures: the reference graded with fresh seeds fails no task more often than the
 //! task declares, and the p-values of the statistical sub-tests are uniform (so the
 //! declared rates are the real ones).
-#![cfg(feature = "solutions")]
 
 use pbrlab::grade::calibration::repeat;
 use pbrlab::grade::isolation::Launcher;

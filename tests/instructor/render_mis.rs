@@ -3,8 +3,6 @@
 //! unit-square light above it, and (scene B) an occluder in between. Every heuristic must
 //! be unbiased; the value is computed here by quadrature.
 
-#![cfg(feature = "solutions")]
-
 use glam::Vec3;
 use pbrlab::geometry::Ray;
 use pbrlab::integrator::Heuristic;

@@ -3,7 +3,7 @@
 //! and line. Each hostile file is built with cargo in a scratch copy of the student's crate
 //! (its framework-owned lib.rs, build.rs and manifest, the framework by path), so the real
 //! build script and the real compiler flags are what refuse it. The hostile code at run
-//! time is in `tests/instructor_hostile.rs`.
+//! time is in `tests/instructor/hostile.rs`.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

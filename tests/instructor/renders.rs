@@ -3,11 +3,8 @@
 //! by the grader's own image check, and a biased render (or a wrong path tracer) does not.
 //!
 //! Missing files are written; after a deliberate change to a scene or the reference,
-//! rewrite them with `PBRLAB_UPDATE_RENDERS=1 cargo test --release --test instructor_renders`
+//! rewrite them with `PBRLAB_UPDATE_RENDERS=1 cargo test --release --test instructor renders::`
 //! and commit them: `build.rs` embeds them in the grader. Not part of the student handout.
-#![cfg(feature = "solutions")]
-
-mod instructor_support;
 
 use pbrlab::grade::image_check;
 use pbrlab::grade::renders::{
@@ -54,7 +51,7 @@ fn stored_reference_renders_agree_with_fresh_ones() {
 
 #[test]
 fn a_wrong_path_tracer_fails_the_render_check() {
-    let wrong = instructor_support::wrong::catalogue()
+    let wrong = crate::support::wrong::catalogue()
         .into_iter()
         .find(|w| w.name == "emission counted twice")
         .expect("the double-counting slip");

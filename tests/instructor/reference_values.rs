@@ -6,7 +6,6 @@
 //! critical angle), relative 3e-6 where the task is f32 by signature; a few f32 cases are
 //! ill-conditioned and get a tolerance derived from their condition number, stated where
 //! they are.
-#![cfg(feature = "solutions")]
 
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::{KajiyaKayParams, PhongParams};

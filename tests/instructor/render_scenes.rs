@@ -1,8 +1,6 @@
 //! Every scene in scenes/ loads and renders a few samples with the reference; the image
 //! files are written and read back; the built-in probe scene is valid.
 
-#![cfg(feature = "solutions")]
-
 use pbrlab::grade::probe::probe_scene;
 use pbrlab::render::{RenderOptions, output, render};
 use pbrlab::scene::{LoadOptions, Scene};

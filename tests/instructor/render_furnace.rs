@@ -3,8 +3,6 @@
 //! pixel fully outside it the value 1. The reference renderer must agree within its own
 //! standard error, with every direct-light strategy and both hemisphere samplings.
 
-#![cfg(feature = "solutions")]
-
 use pbrlab::bsdf::HemisphereSampling;
 use pbrlab::render::{RenderOptions, RenderOutput, render};
 use pbrlab::scene::schema::{MisHeuristic, Strategy};

@@ -1,7 +1,6 @@
 //! The power of the statistical checks: errors of known size put into the reference are
 //! caught as often as each task declares (`POWER` in its catalogue file), while the reference
 //! itself fails no more often than the grader's significance says.
-#![cfg(feature = "solutions")]
 
 use pbrlab::grade::catalogue::{declared_power, estimators, sampling_setups};
 use pbrlab::grade::power::{CAUGHT, PowerRow, estimator_power, sampler_power};

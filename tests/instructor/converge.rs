@@ -2,10 +2,6 @@
 //! 1/spp, a biased one flattens, and student code that is not written yet fails its
 //! strategy without stopping the others.
 
-#[cfg(feature = "solutions")]
-#[allow(dead_code)]
-mod stability_support;
-
 use indicatif::ProgressBar;
 use pbrlab::converge::builtin::builtin;
 use pbrlab::converge::{Strategy, StudyConfig, StudyResult, run_study};
@@ -183,8 +179,8 @@ fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
 #[cfg(feature = "solutions")]
 #[test]
 fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_flattens() {
+    use crate::stability_support::{Flaw, flawed};
     use pbrlab_solutions::TASKS as Reference;
-    use stability_support::{Flaw, flawed};
 
     let summaries = run_builtin("microfacet_albedo", Reference, 1024);
     for s in &summaries {
@@ -292,10 +288,10 @@ fn repeated_runs_give_intervals_and_a_bias_test_that_flags_only_the_biased_strat
 #[cfg(feature = "solutions")]
 #[test]
 fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
+    use crate::stability_support::{Flaw, flawed};
     use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
     use pbrlab::scene::LoadOptions;
     use pbrlab_solutions::TASKS as Reference;
-    use stability_support::{Flaw, flawed};
 
     let out = tempfile::tempdir().unwrap();
     let base = LoadOptions {

@@ -4,11 +4,8 @@
 //!
 //! The workers here are this test binary itself (`worker_entry`), serving the reference with
 //! a misbehaving `smith_g1`, so the real process machinery is exercised end to end.
-#![cfg(feature = "solutions")]
 
-mod instructor_support;
-
-use instructor_support::patch::Patch;
+use crate::support::patch::Patch;
 use pbrlab::grade::isolation::Launcher;
 use pbrlab::grade::runner::{GradeOptions, grade};
 use pbrlab::grade::verdict::{GradeReport, TaskStatus};
@@ -57,7 +54,7 @@ fn worker_entry() {
     let Ok(name) = std::env::var(WORKER) else {
         return;
     };
-    instructor_support::install();
+    crate::support::install();
     let mut patch = Patch::new(TaskId::SmithG1);
     if name == "abort at cos 1e-8" {
         // Fine on every graded value (drawn no closer than 1e-7 to the horizon); only the
@@ -78,15 +75,20 @@ fn worker_entry() {
 fn launcher(misbehaviour: &str) -> Launcher {
     Launcher {
         program: std::env::current_exe().expect("test binary path"),
-        args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
-            .map(String::from)
-            .to_vec(),
+        args: [
+            "--exact",
+            "isolation::worker_entry",
+            "--nocapture",
+            "--test-threads=1",
+        ]
+        .map(String::from)
+        .to_vec(),
         env: vec![(WORKER.into(), misbehaviour.into())],
     }
 }
 
 fn grade_with(misbehaviour: &str, implementation: ImplChoice) -> GradeReport {
-    instructor_support::install();
+    crate::support::install();
     let launcher = launcher(misbehaviour);
     let options = GradeOptions {
         tasks: vec![TaskId::Reflect, TaskId::SmithG1, TaskId::CookTorrance],
@@ -280,7 +282,7 @@ fn a_worker_that_cannot_start_is_the_graders_fault() {
 
 #[test]
 fn the_references_estimators_run_in_a_worker_of_their_own_for_the_time_comparison() {
-    instructor_support::install();
+    crate::support::install();
     let options = GradeOptions {
         tasks: vec![TaskId::DeltaTracking],
         implementation: ImplChoice::Student,

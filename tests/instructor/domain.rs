@@ -8,9 +8,6 @@
 //! both with the stored public cases alone (the handout) and with a hidden seed's cases
 //! added (a class). Verdict-judged outputs (reciprocity gaps, plausibility reports) are
 //! judged by their verdicts, not their digits, and are left out of the field variants.
-#![cfg(feature = "solutions")]
-
-mod instructor_support;
 
 use pbrlab::grade::call::Call;
 use pbrlab::grade::case::{Rule, ValueCase};
@@ -314,7 +311,7 @@ fn the_value_cases_catch_every_boundary_mutant() {
 
 /// Every correct alternative passes the value cases (public and hidden) of `seeds`.
 fn alternatives_pass(seeds: std::ops::Range<u64>) {
-    use instructor_support::different;
+    use crate::support::different;
     use pbrlab::grade::values::run;
     let mut failures = Vec::new();
     for task in TaskId::ALL {
@@ -358,7 +355,7 @@ fn every_correct_alternative_passes_the_hidden_cases_of_200_seeds() {
 
 #[test]
 fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_report() {
-    use instructor_support::patch::Patch;
+    use crate::support::patch::Patch;
     use pbrlab::grade::report::{gradescope, text, write_html};
     use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
     let task = TaskId::SmithG1;
@@ -371,8 +368,8 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
             pbrlab_solutions::smith_g1::smith_g1(w, alpha)
         }
     });
-    let inputs = instructor_support::inputs(1);
-    let (status, points, checks) = instructor_support::grade(&patch, task, &inputs[&task]);
+    let inputs = crate::support::inputs(1);
+    let (status, points, checks) = crate::support::grade(&patch, task, &inputs[&task]);
     assert_eq!(status, TaskStatus::Failed);
     let values = checks
         .iter()
@@ -428,8 +425,8 @@ fn one_percent_off(w: glam::Vec3) -> glam::Vec3 {
 
 #[test]
 fn a_sampler_one_percent_off_its_pdf_fails_its_values() {
-    use instructor_support::patch::Patch;
-    let inputs = instructor_support::inputs(1);
+    use crate::support::patch::Patch;
+    let inputs = crate::support::inputs(1);
     let mut cosine = Patch::new(TaskId::CosineSample);
     cosine.cosine_sample = Some(|u| one_percent_off(pbrlab_solutions::TASKS.cosine_sample(u)));
     let mut ndf = Patch::new(TaskId::NdfSample);
@@ -439,7 +436,7 @@ fn a_sampler_one_percent_off_its_pdf_fails_its_values() {
             .map(one_percent_off)
     });
     for (task, patch) in [(TaskId::CosineSample, cosine), (TaskId::NdfSample, ndf)] {
-        let (_, _, checks) = instructor_support::grade(&patch, task, &inputs[&task]);
+        let (_, _, checks) = crate::support::grade(&patch, task, &inputs[&task]);
         let values = checks
             .iter()
             .find(|c| c.name == "values")

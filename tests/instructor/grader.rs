@@ -2,12 +2,8 @@
 //! every known-wrong implementation fails its own task and only that task, and every correct
 //! but different implementation passes. In-process (isolation is tested in
 //! instructor_isolation.rs). Not part of the student handout: it contains correct code.
-#![cfg(feature = "solutions")]
 
-mod instructor_support;
-mod shipped_stubs;
-
-use instructor_support::{different, grade, graded_tasks, inputs, messages, wrong};
+use crate::support::{different, grade, graded_tasks, inputs, messages, wrong};
 use pbrlab::grade::checks::WorkerInput;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
@@ -39,7 +35,7 @@ fn the_reference_scores_full_marks() {
 #[test]
 fn the_shipped_stubs_score_zero_as_not_attempted() {
     let inputs = inputs(1);
-    let untouched = shipped_stubs::untouched();
+    let untouched = crate::shipped_stubs::untouched();
     for task in graded_tasks(&inputs)
         .into_iter()
         .filter(|t| untouched.contains(t))

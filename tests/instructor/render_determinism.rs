@@ -1,8 +1,6 @@
 //! The same seed gives the same image bit for bit, whatever the number of threads: every
 //! pixel has its own random stream.
 
-#![cfg(feature = "solutions")]
-
 use pbrlab::render::{RenderOptions, render};
 use pbrlab::scene::{LoadOptions, Scene};
 use pbrlab_solutions::TASKS as Reference;

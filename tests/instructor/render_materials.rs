@@ -2,8 +2,6 @@
 //! the furnace), and every material's BSDF sampling agrees with its evaluation (BSDF
 //! sampling and light sampling estimate the same direct light).
 
-#![cfg(feature = "solutions")]
-
 use pbrlab::render::{RenderOptions, RenderOutput, render};
 use pbrlab::scene::schema::Strategy;
 use pbrlab::scene::{LoadOptions, Scene};

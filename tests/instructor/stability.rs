@@ -2,19 +2,15 @@
 //! stubs are "not attempted" everywhere, each deliberately naive function fails exactly
 //! the cases it should with the verdict it should, and hangs and panics are reported.
 
-mod shipped_stubs;
-#[cfg(feature = "solutions")]
-mod stability_support;
-
 use pbrlab::stability::{Case, Outcome, Verdict, cases, run_cases};
 use pbrlab::worksheet::Tasks;
 use pbrlab_exercises::TASKS as Student;
 use std::time::Duration;
 #[cfg(feature = "solutions")]
 use {
+    crate::stability_support::{Flaw, flawed},
     pbrlab::stability::cases_for,
     pbrlab::worksheet::TaskId,
-    stability_support::{Flaw, flawed},
     std::collections::BTreeMap,
 };
 
@@ -57,7 +53,7 @@ fn table(outcomes: &[Outcome]) -> String {
 
 #[test]
 fn stubs_are_not_attempted_everywhere() {
-    let untouched = shipped_stubs::untouched();
+    let untouched = crate::shipped_stubs::untouched();
     let stub_cases: Vec<Case<_>> = cases()
         .into_iter()
         .filter(|c| untouched.contains(&c.task))

@@ -6,12 +6,9 @@
 //! The workers are this test binary (`worker_entry`), started by the real grader, so the
 //! real sandbox (`pbrlab::grade::sandbox`) and the real pipes are exercised. What is refused
 //! at compile time (naming the reference, `#[path]`, `include_str!`, `unsafe`, …) is tested
-//! in `tests/instructor_trust.rs`.
-#![cfg(feature = "solutions")]
+//! in `tests/instructor/trust.rs`.
 
-mod instructor_support;
-
-use instructor_support::patch::Patch;
+use crate::support::patch::Patch;
 use pbrlab::grade::isolation::Launcher;
 use pbrlab::grade::runner::{GradeOptions, grade};
 use pbrlab::grade::verdict::{GradeReport, TaskStatus};
@@ -212,7 +209,7 @@ fn worker_entry() {
     let Ok(name) = std::env::var(ATTACK) else {
         return;
     };
-    instructor_support::install();
+    crate::support::install();
     if name == "forge" {
         forge_with_the_nonce();
     }
@@ -246,12 +243,17 @@ fn worker_entry() {
 
 /// Grades reflect, smith_g1 and cook_torrance with workers that attack with `attack`.
 fn grade_under(attack: &str, canary: &std::path::Path) -> GradeReport {
-    instructor_support::install();
+    crate::support::install();
     let launcher = Launcher {
         program: std::env::current_exe().expect("test binary path"),
-        args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
-            .map(String::from)
-            .to_vec(),
+        args: [
+            "--exact",
+            "hostile::worker_entry",
+            "--nocapture",
+            "--test-threads=1",
+        ]
+        .map(String::from)
+        .to_vec(),
         env: vec![
             (ATTACK.into(), attack.into()),
             (CANARY.into(), canary.display().to_string()),
@@ -365,13 +367,18 @@ fn no_library_or_generated_code_can_be_loaded() {
 fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
     use pbrlab::grade::call::Call;
     use pbrlab::grade::catalogue::hidden_inputs;
-    instructor_support::install();
+    crate::support::install();
     let seed = 4242;
     let launcher = Launcher {
         program: std::env::current_exe().expect("test binary path"),
-        args: ["--exact", "worker_entry", "--nocapture", "--test-threads=1"]
-            .map(String::from)
-            .to_vec(),
+        args: [
+            "--exact",
+            "hostile::worker_entry",
+            "--nocapture",
+            "--test-threads=1",
+        ]
+        .map(String::from)
+        .to_vec(),
         env: vec![(ATTACK.into(), "leak".into())],
     };
     let options = GradeOptions {

@@ -7,7 +7,6 @@
 //! grading cannot even start; the slow suite builds a package as its setup script does (the
 //! framework from scratch: minutes) and grades a correct, a stub, a non-compiling and a
 //! hostile submission through both services' scripts.
-#![cfg(feature = "solutions")]
 
 use pbrlab::autograder::schema::{Service, validate};
 use pbrlab::worksheet::TaskId;

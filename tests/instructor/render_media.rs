@@ -3,8 +3,6 @@
 //! volumetric path tracer conserves energy (a white scattering ball under a white sky is
 //! invisible) and attenuates by Beer-Lambert.
 
-#![cfg(feature = "solutions")]
-
 use glam::Vec3;
 use pbrlab::geometry::Ray;
 use pbrlab::medium::{

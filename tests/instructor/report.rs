@@ -2,11 +2,8 @@
 //! submission, runs its script without a console error, and has the render pictures
 //! (loaded), the z-map legend and a sampling histogram; a screenshot is left in the
 //! target folder for people to look at. Not part of the student handout.
-#![cfg(feature = "solutions")]
 
-mod instructor_support;
-
-use instructor_support::{grade, inputs, wrong};
+use crate::support::{grade, inputs, wrong};
 use pbrlab::grade::report::write_html;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};

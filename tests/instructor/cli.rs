@@ -1,9 +1,6 @@
 //! `pbrlab grade` end to end through the real binary: the shipped stubs grade to zero with
 //! every task "not attempted", the reference to full marks in every report format, and the
 //! last grade feeds `pbrlab tasks`.
-#![cfg(feature = "solutions")]
-
-mod shipped_stubs;
 
 use pbrlab::grade::verdict::{GradeReport, TaskStatus};
 use pbrlab::worksheet::TaskId;
@@ -24,7 +21,7 @@ fn stdout(out: &Output) -> String {
 
 #[test]
 fn the_stubs_grade_to_zero_and_tasks_shows_it() {
-    let untouched = shipped_stubs::untouched();
+    let untouched = crate::shipped_stubs::untouched();
     let all_stubs = untouched.len() == TaskId::ALL.len();
     let state = tempfile::tempdir().unwrap();
     let out = pbrlab(state.path(), &["grade", "--format", "json"]);
@@ -74,7 +71,7 @@ fn row<'t>(table: &'t str, task: &str) -> &'t str {
 
 #[test]
 fn tasks_keeps_every_tasks_latest_grade_and_lists_the_scenes() {
-    let untouched = shipped_stubs::untouched();
+    let untouched = crate::shipped_stubs::untouched();
     let state = tempfile::tempdir().unwrap();
     let grade = |task: &str| assert!(pbrlab(state.path(), &["grade", task]).status.success());
     // Two tasks still at their stubs (the worksheet's first two in a clean clone).
