@@ -9,18 +9,20 @@
 
 /// What a task file needs in scope: vectors, the task trait, the parameter types.
 pub mod prelude {
-    pub use pbrlab::prelude::*;
+    pub use pbrlab_renderer::prelude::*;
 }
 
 /// The framework helpers a task may use, under the paths the exercise texts give
 /// (`crate::bsdf::projected_alpha`, `crate::optics::schlick_weight`, …).
-pub use pbrlab::{bsdf, geometry, light, math, medium, optics, sampling, scene, worksheet};
+pub use pbrlab_renderer::{
+    bsdf, geometry, light, math, medium, optics, sampling, scene, worksheet,
+};
 
 /// The integrator types the tasks exchange. Not the framework's integrators themselves:
 /// its volumetric path tracer would compute `path_trace`'s answer for a student who
 /// forwarded to it.
 pub mod integrator {
-    pub use pbrlab::integrator::{Bounce, DirectLight, Heuristic, Segment};
+    pub use pbrlab_renderer::integrator::{Bounce, DirectLight, Heuristic, Segment};
 }
 
 /// The crate's task modules under the name they had when `exercises/` was a module of the
@@ -33,4 +35,4 @@ pub use crate as exercises;
 include!(concat!(env!("OUT_DIR"), "/tasks.rs"));
 
 /// The student's code as the framework calls it.
-pub static TASKS: pbrlab::worksheet::TaskFns = pbrlab::task_table!();
+pub static TASKS: pbrlab_renderer::worksheet::TaskFns = pbrlab_renderer::task_table!();

@@ -6,10 +6,10 @@
 
 /// What a task file needs in scope: vectors, the task trait, the parameter types.
 pub mod prelude {
-    pub use pbrlab::prelude::*;
+    pub use pbrlab_renderer::prelude::*;
 }
 
-pub use pbrlab::{
+pub use pbrlab_renderer::{
     bsdf, geometry, integrator, light, math, medium, optics, sampling, scene, worksheet,
 };
 
@@ -30,4 +30,4 @@ pub mod refract_stack;
 pub mod smith_g1;
 
 /// The reference as the framework calls it.
-pub static TASKS: pbrlab::worksheet::TaskFns = pbrlab::task_table!();
+pub static TASKS: pbrlab_renderer::worksheet::TaskFns = pbrlab_renderer::task_table!();

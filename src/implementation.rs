@@ -3,7 +3,7 @@
 //! [`TaskFns`] table exported by its own crate.
 //!
 //! The framework never names those crates: a binary [`install`]s their tables once at start,
-//! and framework code reaches them through [`student`], [`reference`] and [`mixed`]. So the
+//! and framework code reaches them through [`student`], [`reference()`] and [`mixed`]. So the
 //! student's crate cannot reach the reference through the framework, and an exercise edit
 //! recompiles only the exercise crate and the binary's link.
 
@@ -24,7 +24,7 @@ pub struct Implementations {
 
 static INSTALLED: OnceLock<Implementations> = OnceLock::new();
 
-/// Makes `implementations` the ones [`student`], [`reference`] and [`mixed`] return. Called
+/// Makes `implementations` the ones [`student`], [`reference()`] and [`mixed`] return. Called
 /// once, by the binary's `main` (or a test) before anything runs task code; a second call
 /// is ignored.
 pub fn install(implementations: Implementations) {

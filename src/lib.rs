@@ -4,24 +4,25 @@
 //! functions a student writes (`exercises/`), with a reference (`solutions/`); a renderer
 //! calls them, so a student's code renders real pictures; and a grader scores them.
 //!
-//! ## Architecture
-//! - [`worksheet`]: the task table: every task's id, points, hints, and the [`Tasks`]
-//!   trait that lists every task function once. Conventions are stated there.
+//! ## Layers
+//! This crate (`src/`, package `pbrlab`) is the grader and the commands' library. It builds
+//! on the task API and the renderer, the crate `pbrlab-renderer` (`src/renderer/`), whose
+//! modules it re-exports under the same paths ([`worksheet`], [`scene`], [`render`], …).
+//! Its own modules:
 //! - [`implementation`]: the task tables a binary links: the student's (the crate in
 //!   `exercises/`) and the reference's (the crate in `solutions/`), and mixes of the two.
-//! - [`math`], [`sampling`], [`optics`], [`bsdf`]: framework pieces that are not tasks.
-//! - The renderer: [`scene`] (YAML scenes, validation, what a scene needs, and the
-//!   framework API integrators call), [`geometry`] (shapes, BVHs), [`light`], [`medium`],
-//!   [`integrator`] (the path tracer built on the `path_trace` and `mis` tasks, and the
-//!   volumetric path tracer built on `delta_tracking`) and [`render`] (tiles, threads,
-//!   film, image files).
-//! - [`grade`]: the grader.
+//! - [`grade`]: the grader; [`stability`]: stiff and extreme inputs; [`converge`]: error
+//!   against run time.
+//! - [`autograder`]: packages for Gradescope and PrairieLearn, and a whole class at once.
 //! - [`handout`]: the student repository without the solutions.
+//! - [`cli`]: the `pbrlab` command line.
+//!
+//! `src/ARCHITECTURE.md` maps the flows, the crates and every file a task touches.
 //!
 //! ## Crates, and the boundary around student code
-//! This is the framework crate (`src/`, package `pbrlab`). The student's code is its own
-//! small crate (`exercises/`, `pbrlab-exercises`) and the reference another (`solutions/`,
-//! `pbrlab-solutions`); each depends on this one and exports a
+//! The student's code is its own small crate (`exercises/`, `pbrlab-exercises`) and the
+//! reference another (`solutions/`, `pbrlab-solutions`); each depends on `pbrlab-renderer`
+//! only and exports a
 //! [`TaskFns`](worksheet::TaskFns) table built by [`task_table!`]. The root package
 //! (`pbrlab-cli`) links both into the `pbrlab` binary and
 //! [`install`](implementation::install)s them. The framework is compiled once, for
@@ -59,43 +60,20 @@
 //! [`Tasks`]: worksheet::Tasks
 //! [`task_table!`]: crate::task_table
 
-pub mod atomic_file;
 pub mod autograder;
-pub mod bsdf;
 pub mod cli;
-pub mod compiled_reference;
 pub mod converge;
 pub mod entropy;
-pub mod geometry;
 pub mod grade;
 pub mod handout;
 pub mod implementation;
-pub mod integrator;
-pub mod light;
-pub mod math;
-pub mod medium;
-pub mod optics;
 pub mod panics;
-pub mod render;
-pub mod sampling;
-pub mod scene;
 pub mod stability;
-pub mod task_set;
-pub mod worksheet;
 
-/// What a task file needs in scope: vectors, the task trait, the parameter types.
-pub mod prelude {
-    pub use crate::bsdf::{Bsdf, BsdfSample, KajiyaKayParams, PhongParams, PlausibilityReport};
-    pub use crate::geometry::{Hit, Ray};
-    pub use crate::integrator::{Bounce, DirectLight, Heuristic, Segment};
-    pub use crate::light::LightSample;
-    pub use crate::medium::{Coefficients, FreeFlight, Medium};
-    pub use crate::optics::{LayerStack, Slab, StackReport};
-    pub use crate::sampling::Sampler;
-    pub use crate::scene::Scene;
-    pub use crate::worksheet::Tasks;
-    pub use glam::{Vec2, Vec3};
-}
+pub use pbrlab_renderer::{
+    atomic_file, bsdf, compiled_reference, geometry, integrator, light, math, medium, optics,
+    prelude, reference_library, render, sampling, scene, task_set, task_table, worksheet,
+};
 
 /// The repository this framework was built from (the workspace root, one folder above the
 /// framework's `src/`): where `scenes/`, `exercises/` and `.pbrlab/` are found by default.

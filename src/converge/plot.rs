@@ -24,7 +24,7 @@ const FONT_CANDIDATES: &[&str] = &[
 const FAMILY: &str = "sans-serif";
 
 /// Registers a TrueType font with plotters once per process: `$PBRLAB_FONT` if set, else
-/// the first of [`FONT_CANDIDATES`] that loads. Returns the file used.
+/// the first of a list of common font files that loads. Returns the file used.
 pub fn ensure_font() -> Result<&'static str> {
     static FONT: OnceLock<Option<String>> = OnceLock::new();
     FONT.get_or_init(|| {

@@ -255,7 +255,7 @@ impl Call {
     ///   zeros stay zero;
     /// - every direction turned by `JITTER_ULPS · ε / sin θ` near a pole of the local
     ///   normal or of another direction, or by `JITTER_ULPS · ε / cos θ` near the horizon
-    ///   of another direction (at most [`MAX_TURN`]), toward that axis (landing on a pole
+    ///   of another direction (at most `MAX_TURN`), toward that axis (landing on a pole
     ///   that close), away from it, or sideways: an implementation that goes through
     ///   `sqrt(1 − cos²)`, `acos` or `asin` (the polar form of an NDF, Snell's law by
     ///   angles) loses that much there, and a direction stored in f32 is not quite unit, so

@@ -139,7 +139,7 @@ fn cpu_seconds(timeout: Duration) -> u64 {
     (timeout.as_secs_f64() * WORKER_THREADS as f64).ceil() as u64 + 5
 }
 
-/// The most threads a worker's user may run (its own user: see [`worker_user`]).
+/// The most threads a worker's user may run (its own user: see `worker_user`).
 pub const WORKER_MAX_THREADS: u64 = 64;
 
 /// What the report says of the limits when a worker kept the grader's user.

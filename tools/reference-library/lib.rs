@@ -1,7 +1,7 @@
 //! The reference's whole task table behind two C functions, for the handout's binaries to
-//! load (`pbrlab::compiled_reference`): the library's ABI signature, which the loader
+//! load (`pbrlab_renderer::compiled_reference`): the library's ABI signature, which the loader
 //! compares with its own before anything else crosses, and the table.
 //!
 //! The package's examples (`tasks/`) are the grader's libraries of one task each.
 
-pbrlab::reference_library!(pbrlab_solutions::TASKS);
+pbrlab_renderer::reference_library!(pbrlab_solutions::TASKS);

@@ -1,6 +1,6 @@
 //! The reference of `cosine_sample` and of no other task (see `../Cargo.toml`).
 
-pbrlab::reference_library!(pbrlab::worksheet::TaskFns::ABSENT.with_task(
+pbrlab_renderer::reference_library!(pbrlab_renderer::worksheet::TaskFns::ABSENT.with_task(
     &pbrlab_solutions::TASKS,
-    pbrlab::worksheet::TaskId::CosineSample
+    pbrlab_renderer::worksheet::TaskId::CosineSample
 ));

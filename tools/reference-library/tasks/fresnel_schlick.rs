@@ -1,6 +1,6 @@
 //! The reference of `fresnel_schlick` and of no other task (see `../Cargo.toml`).
 
-pbrlab::reference_library!(pbrlab::worksheet::TaskFns::ABSENT.with_task(
+pbrlab_renderer::reference_library!(pbrlab_renderer::worksheet::TaskFns::ABSENT.with_task(
     &pbrlab_solutions::TASKS,
-    pbrlab::worksheet::TaskId::FresnelSchlick
+    pbrlab_renderer::worksheet::TaskId::FresnelSchlick
 ));

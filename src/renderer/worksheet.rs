@@ -16,8 +16,8 @@
 //! The `tasks!` invocation at the bottom of this file lists every task function once. It
 //! generates the [`Tasks`] trait and the function table [`TaskFns`] that implements it.
 //! The student's crate (`exercises/`) and the reference's crate (`solutions/`) each export
-//! a `TaskFns` built by [`task_table!`](crate::task_table); [`crate::implementation`] holds
-//! the ones a binary links. Task functions that build on other tasks take `t: &impl Tasks`
+//! a `TaskFns` built by [`task_table!`](crate::task_table); the grader's `implementation`
+//! module holds the ones a binary links. Task functions that build on other tasks take `t: &impl Tasks`
 //! as their first argument and call the other tasks through it, so the grader can grade one
 //! task with the reference standing in for the others, and `--impl mixed` can combine the
 //! two ([`TaskFns::with_task`]).
@@ -476,7 +476,7 @@ macro_rules! tasks {
         /// type, so changing an exercise recompiles only the exercise crate and a link.
         ///
         /// Functions that call other tasks receive the table itself as `t`, so a table mixed
-        /// from two implementations ([`TaskFns::mixed`]) routes every call by task.
+        /// from two implementations ([`TaskFns::with_task`]) routes every call by task.
         // The field types are the task signatures, spelled out once each.
         #[allow(clippy::type_complexity)]
         #[derive(Clone, Copy)]

@@ -2,7 +2,7 @@
 //! The whole reference goes into the student handout (`tools/reference/`, written by
 //! `pbrlab handout`), whose binaries load it, so `render --impl mixed` takes the reference for
 //! the tasks a student has not written, without the reference's source. One library per task
-//! is what the grader's workers load ([`crate::grade::references`]).
+//! is what the grader's workers load (the grader's `grade::references`).
 //!
 //! The library holds its own copy of this framework, and the handout's binaries hand it
 //! their scenes, samplers and task tables by reference, in Rust's own calling convention.
@@ -62,7 +62,7 @@ pub fn file_name() -> String {
 
 /// The start of the name of each one-task library, followed by the task's id
 /// (`pbrlab_reference_smith_g1`): the examples of `tools/reference-library/`, which the
-/// grader's workers load ([`crate::grade::references`]).
+/// grader's workers load (the grader's `grade::references`).
 pub const TASK_LIBRARY_PREFIX: &str = "pbrlab_reference_";
 
 /// Defines the two C functions of a reference library ([`ABI_SYMBOL`], [`TASKS_SYMBOL`]),

@@ -1,7 +1,7 @@
 use crate::worksheet::TaskId;
 
 /// A set of tasks, as a bit mask over [`TaskId`]. Used to say which tasks run the student's
-/// code in a [`crate::implementation::Mixed`] implementation, and which tasks a scene needs.
+/// code in a mixed implementation (the grader's `implementation::mixed`), and which tasks a scene needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct TaskSet(u32);
 
