@@ -15,7 +15,6 @@
 //!   against run time.
 //! - [`autograder`]: packages for Gradescope and PrairieLearn, and a whole class at once.
 //! - [`handout`]: the student repository without the solutions.
-//! - [`cli`]: the `pbrlab` command line.
 //!
 //! `src/ARCHITECTURE.md` maps the flows, the crates and every file a task touches.
 //!
@@ -61,7 +60,6 @@
 //! [`task_table!`]: crate::task_table
 
 pub mod autograder;
-pub mod cli;
 pub mod converge;
 pub mod entropy;
 pub mod grade;

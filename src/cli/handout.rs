@@ -1,7 +1,7 @@
-use crate::handout;
-use crate::implementation::student_attempted;
-use crate::worksheet::task_functions;
 use anyhow::bail;
+use pbrlab::handout;
+use pbrlab::implementation::student_attempted;
+use pbrlab::worksheet::task_functions;
 use std::path::PathBuf;
 
 /// Arguments of `pbrlab handout`.
@@ -21,7 +21,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         bail!("this is already a handout: run `pbrlab handout` from the instructor repository");
     }
     // The exercises are copied as they are: they must still be the stubs.
-    let written: Vec<_> = student_attempted(&crate::grade::isolation::Launcher::current_exe()?)
+    let written: Vec<_> = student_attempted(&pbrlab::grade::isolation::Launcher::current_exe()?)
         .iter()
         .filter(|t| !task_functions(*t).is_empty())
         .map(|t| format!("exercises/{t}.rs"))
@@ -32,7 +32,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             written.join(", ")
         );
     }
-    let root = crate::repository_root();
+    let root = pbrlab::repository_root();
     let files = handout::write(root, &args.dir)?;
     if !args.without_reference {
         eprintln!(

@@ -1,6 +1,6 @@
-use crate::grade::history::state_dir;
-use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
+use pbrlab::grade::history::state_dir;
+use pbrlab::worksheet::TaskId;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
@@ -82,7 +82,7 @@ pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
     if last > before {
         seen.insert(info.id.to_string(), last);
         let path = seen_path();
-        crate::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
+        pbrlab::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
             .with_context(|| format!("remembering the hints shown in {}", path.display()))?;
     }
     Ok(())

@@ -1,7 +1,7 @@
-use crate::grade::isolation::Launcher;
-use crate::implementation::student_attempted;
-use crate::scene::{LoadOptions, Scene};
 use anyhow::{Result, anyhow};
+use pbrlab::grade::isolation::Launcher;
+use pbrlab::implementation::student_attempted;
+use pbrlab::scene::{LoadOptions, Scene};
 use std::path::PathBuf;
 
 /// Arguments of `pbrlab needs`.

@@ -5,12 +5,12 @@
 //! rebuilds both with cargo
 //! (only the student's crate and the link: about a second), compiler messages shown as
 //! cargo prints them, and runs the command again in the new binary. An exercise file that
-//! does not compile is built from its shipped stub ([`crate::grade::student_build`]): the
+//! does not compile is built from its shipped stub ([`pbrlab::grade::student_build`]): the
 //! other tasks still grade and render, and the grade reports the compiler's message on it.
 
-use crate::grade::isolation::{WORKER_BINARY, worker_beside};
-use crate::grade::student_build::{BuildRecord, StudentBuild};
 use anyhow::Context;
+use pbrlab::grade::isolation::{WORKER_BINARY, worker_beside};
+use pbrlab::grade::student_build::{BuildRecord, StudentBuild};
 use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, SystemTime};
@@ -39,7 +39,7 @@ pub fn ensure_current() -> anyhow::Result<()> {
     if std::env::var_os(REBUILT).is_some() {
         return Ok(());
     }
-    let root = crate::repository_root();
+    let root = pbrlab::repository_root();
     let Some(source) = newest_source(&root.join("exercises")) else {
         return Ok(());
     };
@@ -61,7 +61,7 @@ pub fn ensure_current() -> anyhow::Result<()> {
         return Ok(());
     }
     eprintln!("rebuilding: exercises/ is newer than the binaries (or pbrlab-worker is missing)");
-    let stub = |task| crate::handout::stubs::shipped(root, task);
+    let stub = |task| pbrlab::handout::stubs::shipped(root, task);
     StudentBuild {
         root,
         exercises: &root.join("exercises"),

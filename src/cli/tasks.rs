@@ -1,11 +1,11 @@
-use crate::grade::history::{self, Graded, Progress};
-use crate::grade::isolation::Launcher;
-use crate::grade::renders::RENDER_CHECKS;
-use crate::grade::runner::scene_entry;
-use crate::grade::verdict::TaskStatus;
-use crate::implementation::student_attempted;
-use crate::task_set::TaskSet;
-use crate::worksheet::{TaskId, task_functions};
+use pbrlab::grade::history::{self, Graded, Progress};
+use pbrlab::grade::isolation::Launcher;
+use pbrlab::grade::renders::RENDER_CHECKS;
+use pbrlab::grade::runner::scene_entry;
+use pbrlab::grade::verdict::TaskStatus;
+use pbrlab::implementation::student_attempted;
+use pbrlab::task_set::TaskSet;
+use pbrlab::worksheet::{TaskId, task_functions};
 
 /// Arguments of `pbrlab tasks`.
 #[derive(clap::Args, Debug, Default)]
@@ -41,7 +41,7 @@ fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> String {
 
 /// True when `exercises/<task>.rs` is newer than the task's grade.
 fn changed_since(task: TaskId, graded: &Graded) -> bool {
-    let file = crate::repository_root()
+    let file = pbrlab::repository_root()
         .join("exercises")
         .join(format!("{}.rs", task.name()));
     std::fs::metadata(file)

@@ -1,6 +1,6 @@
-use crate::grade::verdict::TaskStatus;
-use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
+use pbrlab::grade::verdict::TaskStatus;
+use pbrlab::worksheet::TaskId;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -58,7 +58,7 @@ fn hint_task(saved: Option<TaskId>, named: &[String]) -> TaskId {
     saved
         .or_else(|| named.iter().find_map(|n| TaskId::parse(n).ok()))
         .or_else(|| {
-            let progress = crate::grade::history::load_progress();
+            let progress = pbrlab::grade::history::load_progress();
             TaskId::ALL.into_iter().find(|t| {
                 progress
                     .get(t.name())
@@ -95,7 +95,7 @@ fn prompt(exercises: &Path, hint_for: TaskId) {
 /// Regrades every time a file in `exercises/` is saved; h shows the next hint, r regrades,
 /// q (or Ctrl-C) stops.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let root = crate::repository_root();
+    let root = pbrlab::repository_root();
     let exercises = root.join("exercises");
     if !exercises.is_dir() {
         bail!("no exercises/ directory in {}", root.display());

@@ -1,0 +1,259 @@
+//! `pbrlab grade-class` in this repository: a regrade that lists what changed, and (slow)
+//! compile-time bombs stopped by the build's bounds.
+//!
+//! A test binary of its own because a class run builds each submission's worker in the
+//! repository's own target folder, overwriting `target/release/pbrlab-worker` with that
+//! submission's code while it grades. Cargo runs test binaries one after another, so no
+//! other test grades the shipped exercises with a worker that is a submission's. Not in the
+//! student handout (it grades with the reference).
+#![cfg(feature = "solutions")]
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn repository() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn read_json(file: &Path) -> Value {
+    let text = std::fs::read_to_string(file)
+        .unwrap_or_else(|e| panic!("{} was not written: {e}", file.display()));
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The processes whose command line mentions `needle`.
+fn processes_mentioning(needle: &str) -> Vec<String> {
+    std::fs::read_dir("/proc")
+        .unwrap()
+        .flatten()
+        .filter_map(|e| std::fs::read(e.path().join("cmdline")).ok())
+        .map(|c| String::from_utf8_lossy(&c).replace('\0', " "))
+        .filter(|c| c.contains(needle) && !c.contains("cargo test"))
+        .collect()
+}
+
+/// Compile-time attacks on the build beside an honest `reflect`, by student: 8 GiB of
+/// static data, a macro that expands exponentially, a type that grows with every
+/// instantiation, and a flood of compiler errors (10⁵ of them, megabytes of messages).
+const COMPILE_TIME_BOMBS: &[(&str, &str)] = &[
+    (
+        "static_bomb",
+        "use crate::prelude::*;\n\
+         static BIG: [u8; 1 << 33] = [1; 1 << 33];\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = (w, alpha); BIG[7] as f32 }\n",
+    ),
+    (
+        "macro_bomb",
+        "use crate::prelude::*;\n\
+         macro_rules! double {\n\
+             () => { 0u8 };\n\
+             (x $($rest:tt)*) => { [double!($($rest)*), double!($($rest)*)] };\n\
+         }\n\
+         const LEAVES: usize = std::mem::size_of_val(&double!(x x x x x x x x x x x x x x x x \
+         x x x x x x x x x x x x x x x x));\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = (w, alpha); LEAVES as f32 }\n",
+    ),
+    (
+        "type_bomb",
+        "use crate::prelude::*;\n\
+         fn grow<T: Copy>(x: T, n: u32) -> f32 { if n == 0 { 0.0 } else { grow((x, x), n - 1) } }\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = w; grow(alpha, 40) }\n",
+    ),
+    (
+        "error_flood",
+        "use crate::prelude::*;\n\
+         macro_rules! e0 { () => { let _: u8 = \"not a number\"; }; }\n\
+         macro_rules! e1 { () => { e0!(); e0!(); e0!(); e0!(); e0!(); e0!(); e0!(); e0!(); e0!(); e0!(); }; }\n\
+         macro_rules! e2 { () => { e1!(); e1!(); e1!(); e1!(); e1!(); e1!(); e1!(); e1!(); e1!(); e1!(); }; }\n\
+         macro_rules! e3 { () => { e2!(); e2!(); e2!(); e2!(); e2!(); e2!(); e2!(); e2!(); e2!(); e2!(); }; }\n\
+         macro_rules! e4 { () => { e3!(); e3!(); e3!(); e3!(); e3!(); e3!(); e3!(); e3!(); e3!(); e3!(); }; }\n\
+         macro_rules! e5 { () => { e4!(); e4!(); e4!(); e4!(); e4!(); e4!(); e4!(); e4!(); e4!(); e4!(); }; }\n\
+         #[allow(dead_code)]\n\
+         fn flood() { e5!(); }\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = (w, alpha); 0.0 }\n",
+    ),
+];
+
+/// A bomb's submission is stopped within its bound: a build error for the whole submission,
+/// or a compile error of the bomb's own task with the rest graded as written.
+fn assert_bounded(student: &Value) {
+    let seconds = student["seconds"].as_f64().unwrap();
+    assert!(
+        seconds < 150.0,
+        "the build was stopped by its bound: {student}"
+    );
+    if student["status"] == "build error" {
+        return;
+    }
+    assert_eq!(student["status"], "graded", "{student}");
+    let tasks = student["report"]["tasks"].as_array().unwrap();
+    let task = |name: &str| tasks.iter().find(|t| t["task"] == name).unwrap();
+    assert_eq!(
+        task("smith_g1")["status"]["status"],
+        "compile_error",
+        "{student}"
+    );
+    assert_eq!(
+        task("reflect")["points"],
+        task("reflect")["max_points"],
+        "{student}"
+    );
+}
+
+#[test]
+#[ignore = "slow: compile-time bombs run into the build's bounds (about three minutes)"]
+fn a_class_run_bounds_a_compile_time_bomb_and_retries_what_was_not_graded() {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    for (name, smith_g1) in COMPILE_TIME_BOMBS {
+        let folder = submissions.join(name);
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::write(folder.join("smith_g1.rs"), smith_g1).unwrap();
+        std::fs::copy(
+            repository().join("solutions/reflect.rs"),
+            folder.join("reflect.rs"),
+        )
+        .unwrap();
+    }
+    let bomb = submissions.join("bomb");
+    std::fs::create_dir_all(&bomb).unwrap();
+    // A constant evaluation that never ends, its lint lowered.
+    std::fs::write(
+        bomb.join("smith_g1.rs"),
+        "#![allow(long_running_const_eval)]\nuse crate::prelude::*;\n\
+         const fn spin() -> u64 { let mut i = 1u64; loop { i = i.wrapping_add(2); if i == 0 { return i; } } }\n\
+         const X: u64 = spin();\n\
+         pub fn smith_g1(w: Vec3, alpha: f32) -> f32 { let _ = (w, alpha); X as f32 }\n",
+    )
+    .unwrap();
+    let honest = submissions.join("honest");
+    std::fs::create_dir_all(&honest).unwrap();
+    std::fs::copy(
+        repository().join("solutions/reflect.rs"),
+        honest.join("reflect.rs"),
+    )
+    .unwrap();
+    // An earlier run's infrastructure failure: not a grade, so graded again.
+    std::fs::create_dir_all(out.join("students")).unwrap();
+    std::fs::write(
+        out.join("students/honest.json"),
+        r#"{"student": "honest", "status": "not graded", "message": "the build did not finish"}"#,
+    )
+    .unwrap();
+    let run = || {
+        let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+            .arg("grade-class")
+            .arg(&submissions)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+        assert!(output.status.success(), "{stderr}");
+        stderr
+    };
+    let stderr = run();
+    assert!(
+        stderr.contains("0 graded already, 6 to grade (1 of them again"),
+        "{stderr}"
+    );
+    let honest = read_json(&out.join("students/honest.json"));
+    assert_eq!(honest["status"], "graded", "{honest}");
+    let reflect = honest["report"]["tasks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["task"] == "reflect")
+        .unwrap();
+    assert_eq!(reflect["points"], reflect["max_points"], "{reflect}");
+    let bomb = read_json(&out.join("students/bomb.json"));
+    assert_eq!(bomb["status"], "build error", "{bomb}");
+    // Whichever bound comes first: the compiler's CPU time, or (on a busy machine) the
+    // build's wall deadline.
+    let message = bomb["message"].as_str().unwrap();
+    assert!(
+        message.contains("CPU-time bound") || message.contains("did not finish within"),
+        "{bomb}"
+    );
+    assert!(
+        bomb["seconds"].as_f64().unwrap() < 150.0,
+        "the build was stopped by its bound: {bomb}"
+    );
+    for (name, _) in COMPILE_TIME_BOMBS {
+        assert_bounded(&read_json(&out.join(format!("students/{name}.json"))));
+    }
+    assert_eq!(
+        processes_mentioning("pbrlab-class-"),
+        Vec::<String>::new(),
+        "no compiler outlives the class run"
+    );
+    // A build error is a grade: the next run keeps both.
+    let stderr = run();
+    assert!(stderr.contains("6 graded already, 0 to grade"), "{stderr}");
+}
+
+#[test]
+fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_the_same_code() {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    let solution = |task: &str| std::fs::read_to_string(repository().join(task)).unwrap();
+    let (ada, bob) = (submissions.join("ada"), submissions.join("bob"));
+    std::fs::create_dir_all(&ada).unwrap();
+    std::fs::create_dir_all(&bob).unwrap();
+    std::fs::write(ada.join("reflect.rs"), solution("solutions/reflect.rs")).unwrap();
+    let right = solution("solutions/smith_g1.rs");
+    let wrong = right.replace("2.0 * c / (c + root)", "2.0 * c / (c + root + 0.01)");
+    assert_ne!(wrong, right);
+    std::fs::write(bob.join("smith_g1.rs"), &wrong).unwrap();
+    let grade_class = |regrade: bool| {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_pbrlab"));
+        command
+            .arg("grade-class")
+            .arg(&submissions)
+            .arg("--out")
+            .arg(&out)
+            .args(["--hidden-seed", "7"]);
+        if regrade {
+            command.arg("--regrade");
+        }
+        let output = command.output().unwrap();
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        std::fs::read_to_string(out.join("changes.md")).unwrap_or_default()
+    };
+    grade_class(false);
+    let first = read_json(&out.join("students/bob.json"));
+    assert_eq!(first["status"], "graded", "{first}");
+    // The same files and seed: nothing changes.
+    let changes = grade_class(true);
+    assert!(
+        changes.contains("2 submissions regraded: 2 unchanged, 0 changed"),
+        "{changes}"
+    );
+    let history: Vec<PathBuf> = std::fs::read_dir(out.join("history"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(history.len(), 1, "{history:?}");
+    assert_eq!(
+        read_json(&history[0].join("students/bob.json"))["report"],
+        first["report"],
+        "the replaced result is kept"
+    );
+    // Bob fixes his file: the regrade names the task, its points and the checks.
+    std::fs::write(bob.join("smith_g1.rs"), &right).unwrap();
+    std::thread::sleep(std::time::Duration::from_secs(1));
+    let changes = grade_class(true);
+    assert!(
+        changes.contains("1 unchanged, 1 changed (1 up"),
+        "{changes}"
+    );
+    assert!(changes.contains("## bob"), "{changes}");
+    assert!(changes.contains("- smith_g1: "), "{changes}");
+    assert!(changes.contains(": failed → passed"), "{changes}");
+    assert!(!changes.contains("## ada"), "{changes}");
+}
