@@ -30,4 +30,4 @@ pub mod refract_stack;
 pub mod smith_g1;
 
 /// The reference as the framework calls it.
-pub static TASKS: pbrlab_renderer::worksheet::TaskFns = pbrlab_renderer::task_table!();
+pub static TASKS: worksheet::TaskFns = pbrlab_renderer::task_table!();

@@ -141,7 +141,7 @@ impl Submission<'_> {
         }
         let json = match self.service {
             Service::Gradescope => {
-                let mut results = gradescope::gradescope(&graded.report);
+                let mut results = gradescope(&graded.report);
                 results.output = format!("{header}{}", results.output);
                 results.execution_time = start.elapsed().as_secs_f64();
                 serde_json::to_string_pretty(&results)

@@ -1,3 +1,5 @@
+//! Timing one call: its wall-clock and process CPU time.
+
 use crate::render::process_cpu_seconds;
 use std::time::{Duration, Instant};
 

@@ -1,3 +1,5 @@
+//! The study's points as CSV: one row per strategy and sample count.
+
 use super::study::Point;
 use anyhow::Result;
 use std::io::Write;

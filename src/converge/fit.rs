@@ -1,3 +1,5 @@
+//! Least-squares lines through log-log points: the convergence rate of a strategy.
+
 use serde::Serialize;
 
 /// A least-squares line `y = slope · x + intercept`.

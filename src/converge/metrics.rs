@@ -1,3 +1,5 @@
+//! Error metrics of an estimate against the reference: relMSE, with its interval, and bias.
+
 use serde::Serialize;
 
 /// The ε in relMSE's denominator (Rousselle et al. 2011): keeps near-black pixels from

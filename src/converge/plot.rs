@@ -1,3 +1,5 @@
+//! The error-against-time plot of a study, as PNG and SVG.
+
 use super::study::Point;
 use anyhow::{Context, Result, anyhow};
 use plotters::coord::Shift;

@@ -1,3 +1,5 @@
+//! A strategy of the convergence study: one way of estimating a fixed set of quantities.
+
 use anyhow::Result;
 
 /// One way of estimating a fixed set of quantities (the pixels of a render, the entries

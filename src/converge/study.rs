@@ -1,3 +1,6 @@
+//! Running a convergence study: every strategy at growing sample counts, timed and
+//! measured.
+
 use super::clock::timed;
 use super::fit::{Fit, log_log};
 use super::metrics::{ImageError, REL_MSE_EPSILON, image_error};

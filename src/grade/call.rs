@@ -13,6 +13,8 @@ use std::fmt;
 
 /// A task function and its arguments. Serialised into the stored expected data, so the
 /// grader can call the student's function on exactly the inputs the reference saw.
+// The fields are the task function's parameters, named as in its signature (`Tasks`).
+#[allow(missing_docs)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "fn", rename_all = "snake_case")]
 pub enum Call {
@@ -573,6 +575,8 @@ impl fmt::Display for Call {
 }
 
 /// A task's direction sampler with its parameters: what a sampling check draws from.
+// The fields are the sampler's parameters, named as in its signature.
+#[allow(missing_docs)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "fn", rename_all = "snake_case")]
 pub enum SampleCall {

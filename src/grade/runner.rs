@@ -570,9 +570,9 @@ fn render_outcome(
     run: isolation::WorkerRun,
     report_dir: Option<&std::path::Path>,
 ) -> TaskOutcome {
-    let image = |raw: &[super::checks::Raw]| {
+    let image = |raw: &[Raw]| {
         let rendered = raw.iter().find_map(|r| match r {
-            super::checks::Raw::Image(image) => Some(image),
+            Raw::Image(image) => Some(image),
             _ => None,
         });
         let mut result = super::renders::judge(check.scene, rendered, report_dir);

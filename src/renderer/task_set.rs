@@ -1,3 +1,6 @@
+//! Sets of tasks: which tasks a mixed implementation takes from the student, and which
+//! tasks a scene needs.
+
 use crate::worksheet::TaskId;
 
 /// A set of tasks, as a bit mask over [`TaskId`]. Used to say which tasks run the student's

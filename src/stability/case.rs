@@ -1,3 +1,5 @@
+//! One stability case: a stiff or extreme input of one task and what the task must return.
+
 use super::expect::{Bound, Expect};
 use super::value::Value;
 use super::verdict::Verdict;

@@ -1,3 +1,5 @@
+//! What a stability case expects of a number: bounds and tolerances.
+
 use super::value::{Value, format_number};
 
 /// How close a number must be to its target: `|x − target| ≤ abs + rel·|target|`.

@@ -1,3 +1,5 @@
+//! What a task function returned on a stability case, widened to f64.
+
 use glam::Vec3;
 use serde::de::{Deserialize, Deserializer};
 use serde::ser::{Serialize, SerializeMap, Serializer};

@@ -1,3 +1,5 @@
+//! The verdicts of a stability case.
+
 use serde::{Deserialize, Serialize};
 
 /// What a stability case concluded about one implementation.

@@ -252,7 +252,7 @@ fn hint_shows_one_new_level_per_call_and_remembers_it() {
         );
         stdout(&out)
     };
-    let levels = pbrlab::worksheet::TaskId::FresnelSchlick.info().hints.len();
+    let levels = TaskId::FresnelSchlick.info().hints.len();
     assert!(levels >= 2, "{levels} levels");
     let first = hint(&[]);
     assert!(first.contains(&format!("hint 1/{levels}")), "{first}");

@@ -317,7 +317,7 @@ fn the_handout_is_a_git_repository_that_can_put_a_stub_back() {
     // A student's work, committed: the stub still comes from the tagged first commit.
     std::fs::write(&file, "// my work\n").unwrap();
     let git = |args: &[&str]| {
-        let ok = std::process::Command::new("git")
+        let ok = Command::new("git")
             .current_dir(&dir)
             .args(["-c", "user.name=s", "-c", "user.email=s@s"])
             .args(args)
