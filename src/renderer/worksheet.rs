@@ -434,6 +434,22 @@ pub static TASKS: [TaskInfo; 15] = [
     },
 ];
 
+/// String equality in a constant context (the task list's compile-time checks).
+const fn same_str(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
 /// The body of every function of [`TaskFns::ABSENT`].
 fn absent(task: &str) -> ! {
     panic!("no implementation of the task `{task}` is in this process")
@@ -546,6 +562,24 @@ macro_rules! tasks {
                 $(TaskId::$variant => &[$(stringify!($name)),+],)+
             }
         }
+
+        // The hand-kept lists agree with this one at compile time: `TaskId::ALL` and
+        // `TASKS` hold every task, in the enum's order (which `info` indexes by).
+        const _: () = {
+            let count = [$(stringify!($variant)),+].len();
+            assert!(TaskId::ALL.len() == count, "TaskId::ALL misses a task");
+            assert!(TASKS.len() == count, "TASKS misses a task's row");
+            let mut i = 0;
+            while i < count {
+                assert!(TaskId::ALL[i] as usize == i, "TaskId::ALL is out of order");
+                i += 1;
+            }
+            $(assert!(
+                same_str(TASKS[TaskId::$variant as usize].id, stringify!($module)),
+                concat!("the row of TASKS at TaskId::", stringify!($variant), " is not `",
+                    stringify!($module), "`'s"),
+            );)+
+        };
     };
     (@table $ctx:ident) => { &TaskFns };
 }

@@ -18,6 +18,11 @@ pub const POWER: Declared = Declared {
 
 const PDF: &str = "the density is cos θ / π above the surface and 0 below";
 
+/// The sampling check's one setup: `cosine_sample` has no parameters.
+pub fn setups() -> Vec<SampleCall> {
+    vec![SampleCall::CosineSample]
+}
+
 pub fn fixed() -> Vec<CaseInput> {
     let pdf = |name: &str, w: Vec3| CaseInput::new(name, Call::CosinePdf { w }).note(PDF);
     vec![

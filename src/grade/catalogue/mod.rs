@@ -5,23 +5,8 @@
 //! Inputs only: outputs come from the reference, either stored ([`super::expected`]) or,
 //! for hidden cases, computed live.
 
-mod aniso_ndf;
-mod beckmann_ndf;
-mod brdf_check;
-mod cook_torrance;
-mod cosine_sample;
-mod delta_tracking;
-mod fresnel_schlick;
 mod indices;
-mod kajiya_kay;
-mod mis;
-mod ndf_sample;
-mod path_trace;
-mod phong;
 mod polygon;
-mod reflect;
-mod refract_stack;
-mod smith_g1;
 
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
@@ -35,6 +20,136 @@ use crate::worksheet::{TaskId, Tasks};
 use anyhow::bail;
 
 pub use polygon::projected_solid_angle;
+
+/// What a task's catalogue file declares. Every item defaults to "none", so a task has
+/// only what its line in [`registry!`] lists.
+trait TaskCatalogue {
+    /// The declared domain (see [`domain`]).
+    const DOMAIN: &'static [Param] = &[];
+    /// What the estimator and sampling checks are declared to catch.
+    const POWER: Option<crate::grade::power::Declared> = None;
+    /// The fixed cases: the worksheet's examples and the errata's traps.
+    fn fixed() -> Vec<CaseInput> {
+        Vec::new()
+    }
+    /// `count` random cases drawn from the domain.
+    fn random(_s: &mut Sampler, _count: usize) -> Vec<CaseInput> {
+        Vec::new()
+    }
+    /// The sampler setups of the sampling check.
+    fn setups() -> Vec<SampleCall> {
+        Vec::new()
+    }
+    /// The estimators of the estimator check, on implementation `t`.
+    fn estimators<T: Tasks>(_t: &T) -> Vec<EstimatorSpec<'_>> {
+        Vec::new()
+    }
+    /// Estimator pairs whose variances must relate as each pair's bound says.
+    fn variance_pairs<T: Tasks>(_t: &T) -> Vec<VariancePair<'_>> {
+        Vec::new()
+    }
+}
+
+/// One item of a task's [`TaskCatalogue`], taken from its file `$m.rs`.
+macro_rules! catalogue_item {
+    ($m:ident, DOMAIN) => {
+        const DOMAIN: &'static [Param] = $m::DOMAIN;
+    };
+    ($m:ident, POWER) => {
+        const POWER: Option<crate::grade::power::Declared> = Some($m::POWER);
+    };
+    ($m:ident, fixed) => {
+        fn fixed() -> Vec<CaseInput> {
+            $m::fixed()
+        }
+    };
+    ($m:ident, random) => {
+        fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+            $m::random(s, count)
+        }
+    };
+    ($m:ident, setups) => {
+        fn setups() -> Vec<SampleCall> {
+            $m::setups()
+        }
+    };
+    ($m:ident, estimators) => {
+        fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
+            $m::estimators(t)
+        }
+    };
+    ($m:ident, variance_pairs) => {
+        fn variance_pairs<T: Tasks>(t: &T) -> Vec<VariancePair<'_>> {
+            $m::variance_pairs(t)
+        }
+    };
+}
+
+/// The registry: one line per task, `Variant => file { what the file declares }`. It
+/// declares the file's module and dispatches every per-task item by [`TaskId`]; the
+/// matches are exhaustive, so a task left out does not compile.
+macro_rules! registry {
+    ($($variant:ident => $module:ident { $($item:ident),* }),* $(,)?) => {
+        $(mod $module;)*
+
+        /// One unit type per task, carrying its [`TaskCatalogue`].
+        mod entries {
+            use super::*;
+            $(
+                pub(super) struct $variant;
+                impl TaskCatalogue for $variant {
+                    $(catalogue_item!($module, $item);)*
+                }
+            )*
+        }
+
+        fn domain_of(task: TaskId) -> &'static [Param] {
+            match task { $(TaskId::$variant => <entries::$variant as TaskCatalogue>::DOMAIN,)* }
+        }
+        fn power_of(task: TaskId) -> Option<crate::grade::power::Declared> {
+            match task { $(TaskId::$variant => <entries::$variant as TaskCatalogue>::POWER,)* }
+        }
+        fn fixed_of(task: TaskId) -> Vec<CaseInput> {
+            match task { $(TaskId::$variant => <entries::$variant as TaskCatalogue>::fixed(),)* }
+        }
+        fn random_of(task: TaskId, s: &mut Sampler, count: usize) -> Vec<CaseInput> {
+            match task {
+                $(TaskId::$variant => <entries::$variant as TaskCatalogue>::random(s, count),)*
+            }
+        }
+        fn setups_of(task: TaskId) -> Vec<SampleCall> {
+            match task { $(TaskId::$variant => <entries::$variant as TaskCatalogue>::setups(),)* }
+        }
+        fn estimators_of<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
+            match task {
+                $(TaskId::$variant => <entries::$variant as TaskCatalogue>::estimators(t),)*
+            }
+        }
+        fn variance_pairs_of<T: Tasks>(task: TaskId, t: &T) -> Vec<VariancePair<'_>> {
+            match task {
+                $(TaskId::$variant => <entries::$variant as TaskCatalogue>::variance_pairs(t),)*
+            }
+        }
+    };
+}
+
+registry! {
+    Reflect => reflect { DOMAIN, fixed, random },
+    RefractStack => refract_stack { DOMAIN, fixed, random },
+    FresnelSchlick => fresnel_schlick { DOMAIN, fixed, random },
+    CosineSample => cosine_sample { DOMAIN, POWER, fixed, random, setups, estimators },
+    SmithG1 => smith_g1 { DOMAIN, fixed, random },
+    BeckmannNdf => beckmann_ndf { DOMAIN, POWER, fixed, random, estimators },
+    CookTorrance => cook_torrance { DOMAIN, fixed, random },
+    NdfSample => ndf_sample { DOMAIN, POWER, fixed, random, setups, estimators },
+    AnisoNdf => aniso_ndf { DOMAIN, POWER, fixed, random, estimators },
+    Phong => phong { DOMAIN, fixed, random },
+    BrdfCheck => brdf_check { DOMAIN, fixed, random },
+    KajiyaKay => kajiya_kay { DOMAIN, fixed, random },
+    PathTrace => path_trace { POWER, estimators },
+    Mis => mis { POWER, estimators, variance_pairs },
+    DeltaTracking => delta_tracking { POWER, estimators },
+}
 
 /// A value case before its expected output is known.
 #[derive(Clone, Debug, PartialEq)]
@@ -133,21 +248,7 @@ pub const PUBLIC_SEED: u64 = 0x5eed_2024;
 /// boundaries (see [`super::domain`]), stated in the task's catalogue file. Empty for the
 /// integrator tasks, which are graded by estimators and renders, not value cases.
 pub fn domain(task: TaskId) -> &'static [Param] {
-    match task {
-        TaskId::Reflect => reflect::DOMAIN,
-        TaskId::RefractStack => refract_stack::DOMAIN,
-        TaskId::FresnelSchlick => fresnel_schlick::DOMAIN,
-        TaskId::CosineSample => cosine_sample::DOMAIN,
-        TaskId::SmithG1 => smith_g1::DOMAIN,
-        TaskId::CookTorrance => cook_torrance::DOMAIN,
-        TaskId::AnisoNdf => aniso_ndf::DOMAIN,
-        TaskId::Phong => phong::DOMAIN,
-        TaskId::KajiyaKay => kajiya_kay::DOMAIN,
-        TaskId::BeckmannNdf => beckmann_ndf::DOMAIN,
-        TaskId::NdfSample => ndf_sample::DOMAIN,
-        TaskId::BrdfCheck => brdf_check::DOMAIN,
-        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => &[],
-    }
+    domain_of(task)
 }
 
 /// Where `call` lies in its task's declared domain, for a student reading a failure: on
@@ -188,39 +289,11 @@ pub fn position(call: &Call) -> Option<String> {
 }
 
 fn fixed(task: TaskId) -> Vec<CaseInput> {
-    match task {
-        TaskId::Reflect => reflect::fixed(),
-        TaskId::RefractStack => refract_stack::fixed(),
-        TaskId::FresnelSchlick => fresnel_schlick::fixed(),
-        TaskId::CosineSample => cosine_sample::fixed(),
-        TaskId::SmithG1 => smith_g1::fixed(),
-        TaskId::CookTorrance => cook_torrance::fixed(),
-        TaskId::AnisoNdf => aniso_ndf::fixed(),
-        TaskId::Phong => phong::fixed(),
-        TaskId::KajiyaKay => kajiya_kay::fixed(),
-        TaskId::BeckmannNdf => beckmann_ndf::fixed(),
-        TaskId::NdfSample => ndf_sample::fixed(),
-        TaskId::BrdfCheck => brdf_check::fixed(),
-        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => Vec::new(),
-    }
+    fixed_of(task)
 }
 
 fn random(task: TaskId, s: &mut Sampler, count: usize, label: &str) -> Vec<CaseInput> {
-    let cases = match task {
-        TaskId::Reflect => reflect::random(s, count),
-        TaskId::RefractStack => refract_stack::random(s, count),
-        TaskId::FresnelSchlick => fresnel_schlick::random(s, count),
-        TaskId::CosineSample => cosine_sample::random(s, count),
-        TaskId::SmithG1 => smith_g1::random(s, count),
-        TaskId::CookTorrance => cook_torrance::random(s, count),
-        TaskId::AnisoNdf => aniso_ndf::random(s, count),
-        TaskId::Phong => phong::random(s, count),
-        TaskId::KajiyaKay => kajiya_kay::random(s, count),
-        TaskId::BeckmannNdf => beckmann_ndf::random(s, count),
-        TaskId::NdfSample => ndf_sample::random(s, count),
-        TaskId::BrdfCheck => brdf_check::random(s, count),
-        TaskId::PathTrace | TaskId::Mis | TaskId::DeltaTracking => Vec::new(),
-    };
+    let cases = random_of(task, s, count);
     // A draw aimed just inside a limit can land just outside it once its inputs are rounded
     // to f32 (a direction meant 1e-7 above the horizon ends 5e-8 below): such a case tests
     // a contract the text does not state, so it goes.
@@ -329,11 +402,7 @@ pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<Valu
 
 /// The sampler setups whose distributions the sampling check tests.
 pub fn sampling_setups(task: TaskId) -> Vec<SampleCall> {
-    match task {
-        TaskId::CosineSample => vec![SampleCall::CosineSample],
-        TaskId::NdfSample => ndf_sample::setups(),
-        _ => Vec::new(),
-    }
+    setups_of(task)
 }
 
 /// An estimator with a known mean, built on an implementation's task functions.
@@ -350,38 +419,17 @@ pub struct EstimatorSpec<'a> {
 
 /// The estimators of the estimator check of `task`, on implementation `t`.
 pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
-    match task {
-        TaskId::CosineSample => cosine_sample::estimators(t),
-        TaskId::AnisoNdf => aniso_ndf::estimators(t),
-        TaskId::BeckmannNdf => beckmann_ndf::estimators(t),
-        TaskId::NdfSample => ndf_sample::estimators(t),
-        TaskId::PathTrace => path_trace::estimators(t),
-        TaskId::Mis => mis::estimators(t),
-        TaskId::DeltaTracking => delta_tracking::estimators(t),
-        _ => Vec::new(),
-    }
+    estimators_of(task, t)
 }
 
 /// What `task`'s estimator and sampling checks are declared to catch (its catalogue file's
 /// `POWER`); `None` for a task without either.
-pub fn declared_power(task: TaskId) -> Option<super::power::Declared> {
-    match task {
-        TaskId::CosineSample => Some(cosine_sample::POWER),
-        TaskId::AnisoNdf => Some(aniso_ndf::POWER),
-        TaskId::BeckmannNdf => Some(beckmann_ndf::POWER),
-        TaskId::NdfSample => Some(ndf_sample::POWER),
-        TaskId::PathTrace => Some(path_trace::POWER),
-        TaskId::Mis => Some(mis::POWER),
-        TaskId::DeltaTracking => Some(delta_tracking::POWER),
-        _ => None,
-    }
+pub fn declared_power(task: TaskId) -> Option<crate::grade::power::Declared> {
+    power_of(task)
 }
 
 /// Pairs of estimators of `task` whose variances must relate as each pair's bound says
 /// (see [`super::variance_pair`]).
 pub fn variance_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<VariancePair<'_>> {
-    match task {
-        TaskId::Mis => mis::variance_pairs(t),
-        _ => Vec::new(),
-    }
+    variance_pairs_of(task, t)
 }

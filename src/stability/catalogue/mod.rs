@@ -2,22 +2,6 @@
 //! the stiff and extreme inputs of that task (ERRATA.md, "Stiff / extreme-case
 //! catalogue"), with the right value or limit and the guard that gets there.
 
-mod aniso_ndf;
-mod beckmann_ndf;
-mod brdf_check;
-mod cook_torrance;
-mod cosine_sample;
-mod delta_tracking;
-mod fresnel_schlick;
-mod kajiya_kay;
-mod mis;
-mod ndf_sample;
-mod path_trace;
-mod phong;
-mod reflect;
-mod refract_stack;
-mod smith_g1;
-
 pub use aniso_ndf::{DELTA_PEAK, DELTA_PEAK_MIN};
 pub use delta_tracking::STREAM_STARTING_AT_ZERO;
 pub use refract_stack::stack_report_value;
@@ -30,25 +14,37 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
     TaskId::ALL.into_iter().flat_map(cases_for::<T>).collect()
 }
 
-/// The cases of one task.
-pub fn cases_for<T: Tasks>(task: TaskId) -> Vec<Case<T>> {
-    match task {
-        TaskId::Reflect => reflect::cases(),
-        TaskId::RefractStack => refract_stack::cases(),
-        TaskId::FresnelSchlick => fresnel_schlick::cases(),
-        TaskId::CosineSample => cosine_sample::cases(),
-        TaskId::SmithG1 => smith_g1::cases(),
-        TaskId::CookTorrance => cook_torrance::cases(),
-        TaskId::AnisoNdf => aniso_ndf::cases(),
-        TaskId::Phong => phong::cases(),
-        TaskId::KajiyaKay => kajiya_kay::cases(),
-        TaskId::BeckmannNdf => beckmann_ndf::cases(),
-        TaskId::NdfSample => ndf_sample::cases(),
-        TaskId::BrdfCheck => brdf_check::cases(),
-        TaskId::PathTrace => path_trace::cases(),
-        TaskId::Mis => mis::cases(),
-        TaskId::DeltaTracking => delta_tracking::cases(),
-    }
+/// The registry: one line per task, `Variant => file`. It declares the file's module and
+/// dispatches by [`TaskId`]; the match is exhaustive, so a task left out does not compile.
+macro_rules! registry {
+    ($($variant:ident => $module:ident),* $(,)?) => {
+        $(mod $module;)*
+
+        /// The cases of one task.
+        pub fn cases_for<T: Tasks>(task: TaskId) -> Vec<Case<T>> {
+            match task {
+                $(TaskId::$variant => $module::cases(),)*
+            }
+        }
+    };
+}
+
+registry! {
+    Reflect => reflect,
+    RefractStack => refract_stack,
+    FresnelSchlick => fresnel_schlick,
+    CosineSample => cosine_sample,
+    SmithG1 => smith_g1,
+    BeckmannNdf => beckmann_ndf,
+    CookTorrance => cook_torrance,
+    NdfSample => ndf_sample,
+    AnisoNdf => aniso_ndf,
+    Phong => phong,
+    BrdfCheck => brdf_check,
+    KajiyaKay => kajiya_kay,
+    PathTrace => path_trace,
+    Mis => mis,
+    DeltaTracking => delta_tracking,
 }
 
 #[cfg(test)]
