@@ -37,14 +37,21 @@ fn abi_build() -> String {
     }
     println!("cargo::rerun-if-changed=.");
     let sources = hasher.finish();
-    // The locked dependency versions, less the workspace's own packages (the handout has
-    // fewer of those).
+    // The locked versions of what this crate links: its dependencies, transitively, less the
+    // workspace's own packages. Not the whole lock file: the handout's has fewer packages
+    // (no reference, no benchmarks) and must give the same line.
     let lock = std::fs::read_to_string("../../Cargo.lock").unwrap_or_default();
     println!("cargo::rerun-if-changed=../../Cargo.lock");
     let mut hasher = DefaultHasher::new();
-    for package in lock.split("\n[[package]]\n").skip(1) {
+    for package in locked_closure(&lock, env!("CARGO_PKG_NAME")) {
         if !package.starts_with("name = \"pbrlab") {
-            package.trim().hash(&mut hasher);
+            // Name, version, source and checksum: not the dependency list, whose entries
+            // carry a version only while the lock holds two of a name.
+            package
+                .lines()
+                .filter(|l| !l.starts_with("dependencies") && !l.starts_with(' '))
+                .filter(|l| !l.starts_with(']'))
+                .for_each(|l| l.hash(&mut hasher));
         }
     }
     format!(
@@ -53,6 +60,52 @@ fn abi_build() -> String {
         features.join(" "),
         hasher.finish()
     )
+}
+
+/// The `[[package]]` entries of the lock file `lock` that `root` depends on, itself
+/// included, in lock-file order. A dependency is written `name` when the lock has one
+/// version of it, else `name version` (and a source after that).
+fn locked_closure<'a>(lock: &'a str, root: &str) -> Vec<&'a str> {
+    let field = |package: &'a str, key: &str| {
+        package.lines().find_map(|l| {
+            l.strip_prefix(key)
+                .and_then(|v| v.strip_prefix(" = \""))
+                .and_then(|v| v.strip_suffix('"'))
+        })
+    };
+    let packages: Vec<&str> = lock.split("\n[[package]]\n").skip(1).collect();
+    let dependencies = |package: &'a str| -> Vec<(&'a str, Option<&'a str>)> {
+        let Some(start) = package.find("dependencies = [") else {
+            return Vec::new();
+        };
+        package[start..]
+            .lines()
+            .skip(1)
+            .take_while(|l| !l.starts_with(']'))
+            .filter_map(|l| {
+                let entry = l.trim().trim_end_matches(',').trim_matches('"');
+                let mut words = entry.split(' ');
+                Some((words.next()?, words.next()))
+            })
+            .collect()
+    };
+    let mut wanted = vec![(root, None)];
+    let mut taken = vec![false; packages.len()];
+    while let Some((name, version)) = wanted.pop() {
+        for (i, package) in packages.iter().enumerate() {
+            let matches = field(package, "name") == Some(name)
+                && version.is_none_or(|v| field(package, "version") == Some(v));
+            if matches && !taken[i] {
+                taken[i] = true;
+                wanted.extend(dependencies(package));
+            }
+        }
+    }
+    packages
+        .into_iter()
+        .zip(taken)
+        .filter_map(|(p, t)| t.then_some(p))
+        .collect()
 }
 
 /// Every `.rs` file under `dir`, depth first.

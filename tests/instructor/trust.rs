@@ -38,9 +38,18 @@ impl Scratch {
         let manifest = manifest.replace("\"../src", &format!("\"{}", framework.display()));
         assert!(!manifest.contains("../src"), "{manifest}");
         std::fs::write(exercises.join("Cargo.toml"), manifest).unwrap();
+        // The student's crate takes its lints from the workspace: the scratch one has the
+        // repository's.
+        let workspace = std::fs::read_to_string(self::root().join("Cargo.toml")).unwrap();
+        let lints: String = workspace
+            .split_inclusive('\n')
+            .skip_while(|l| !l.starts_with("[workspace.lints"))
+            .take_while(|l| !l.starts_with('[') || l.starts_with("[workspace.lints"))
+            .collect();
+        assert!(lints.contains("[workspace.lints"), "{workspace}");
         std::fs::write(
             root.join("Cargo.toml"),
-            "[workspace]\nmembers = [\"exercises\"]\nresolver = \"3\"\n",
+            format!("[workspace]\nmembers = [\"exercises\"]\nresolver = \"3\"\n\n{lints}"),
         )
         .unwrap();
         std::fs::copy(self::root().join("Cargo.lock"), root.join("Cargo.lock")).unwrap();
