@@ -24,6 +24,8 @@
 //!   [`FreeFlight::Exhausted`] instead of looping on (a huge majorant makes the steps so
 //!   small that `t + dt == t` in f32).
 //! - Returned distances lie in `[0, t_max)`.
+//! - The ray may start anywhere and point in any direction, `t_max` is any positive length,
+//!   and `max_steps` may be as small as 1.
 //!
 //! The result is checked statistically: in a homogeneous medium the escape probability
 //! must be `e^{−σt t_max}`, and collisions must split into scatterings and absorptions in

@@ -54,6 +54,11 @@
 //! only contribute 0: skip it.
 //!
 //! # Edge cases
+//! - The surface need not be Lambertian: use `bsdf.pdf` and `s.weight`, never `cos θ / π`.
+//!   The checks shade diffuse, glossy (Phong, also at grazing angles where many BSDF samples
+//!   fail and return `None`: the light sample still counts), mirror and glass surfaces.
+//! - The bounce you return is what `path_trace` continues with: the checks also trace whole
+//!   paths with your `mis` at every bounce.
 //! - A point light lying exactly on the shading point (`d = 0`) lights nothing there (every
 //!   other point of the surface sees it at 90°): return 0 for it instead of dividing by
 //!   `d² = 0`. The graded estimators include such a light, and a NaN fails them.

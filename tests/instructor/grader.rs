@@ -104,7 +104,9 @@ fn every_wrong_implementation_fails_its_own_task_and_only_it() {
 /// The integrator bugs that only show in one configuration (a light not parallel to the
 /// surface or brighter than 1, a sky, a point light off the origin or on the shading point,
 /// MIS weights that only the variance tells apart, bounce weights above 1, a survival
-/// probability other than 1/2, a path that escapes after a bounce) fail the estimator of
+/// probability other than 1/2, a path that escapes after a bounce, a depth below 1,
+/// coloured albedos, surfaces without a bounce, glossy surfaces, a light facing away, the
+/// bounce `mis` hands on, rays off the origin, small step bounds) fail the estimator of
 /// that configuration, and the message names it.
 #[test]
 fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
@@ -144,6 +146,35 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
         (
             "an environment sample never tested for occlusion",
             "a square light under a constant sky, light weights",
+        ),
+        ("`depth == 0` as the only stop", "called with depth -1"),
+        ("survival from the smallest channel", "ρ = (0.8, 0.4, 0)"),
+        ("a scalar throughput", "ρ = (0.8, 0.4, 0)"),
+        ("black where mis gives no bounce", "seen directly"),
+        (
+            "the Lambertian density in the light sample's weight",
+            "phong",
+        ),
+        (
+            "point lights skipped under BSDF weights",
+            "a point light, off the origin, bsdf weights",
+        ),
+        ("area lights taken as two-sided", "facing away"),
+        (
+            "the bounce returned with its emission not counted",
+            "a whole path through",
+        ),
+        (
+            "the medium looked up as if the ray started at the origin",
+            "crossed downwards",
+        ),
+        (
+            "one tentative collision fewer than allowed",
+            "at most 1 step",
+        ),
+        (
+            "one tentative collision more than allowed",
+            "at most 2 steps",
         ),
     ];
     let catalogue = wrong::catalogue();

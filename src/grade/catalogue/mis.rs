@@ -6,20 +6,29 @@
 //! and a point light (a light no BSDF sample can hit), once away from the shading point and
 //! once lying on it.
 //!
+//! The floor is Lambertian in all of these, and also, under the square light alone and
+//! under the sky, a coloured glossy Phong floor seen along its normal (its BSDF density is
+//! not `cos θ / π`, so code that assumes a Lambertian surface shows; the exact answer is a
+//! quadrature of the lobe over the square), and a coloured perfect mirror that reflects the
+//! square (a delta BSDF: no light sample, and its BSDF sample has weight 1 under every
+//! heuristic), and smooth glass in the mirror's place. Every estimate weighs the colour channels apart ([`CHANNEL_WEIGHTS`]).
+//!
 //! Beside the means, two variance comparisons: the same estimator in two units of length,
 //! and the balance heuristic against light sampling alone (weights that sum to one but are
 //! not the balance heuristic's keep the mean and inflate the variance).
 
-use super::EstimatorSpec;
+use super::phong_floor::PhongSurface;
 use super::polygon::projected_solid_angle;
+use super::{CHANNEL_WEIGHTS, EstimatorSpec, path_trace};
 use crate::geometry::{Hit, Ray};
 use crate::grade::power::Declared;
 use crate::grade::variance_pair::{VarianceBound, VariancePair};
 use crate::integrator::Heuristic;
-use crate::sampling::Sampler;
+use crate::optics::fresnel_dielectric_f64;
+use crate::sampling::{Sampler, uniform_sphere};
 use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::Tasks;
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -93,12 +102,15 @@ enum Lighting {
     /// The square light and a point light lying on the floor at the shading point: at
     /// distance 0 it lights nothing (every other point of the floor sees it at cos θ = 0).
     PointOnShadingPoint,
+    /// The errata's square turned to face up, away from the floor, under the sky: it emits
+    /// nothing towards the floor (a one-sided light) and hides the sky behind it.
+    FacingAway,
 }
 
 impl Lighting {
     /// Every lighting, for the tests.
     #[cfg(test)]
-    const ALL: [Lighting; 7] = [
+    const ALL: [Lighting; 8] = [
         Lighting::Open,
         Lighting::Occluded,
         Lighting::Upright,
@@ -106,6 +118,7 @@ impl Lighting {
         Lighting::Sky,
         Lighting::PointLight,
         Lighting::PointOnShadingPoint,
+        Lighting::FacingAway,
     ];
 
     /// What the check's name calls it.
@@ -120,6 +133,7 @@ impl Lighting {
             Lighting::PointOnShadingPoint => {
                 "a square light and a point light at the shading point"
             }
+            Lighting::FacingAway => "a square light facing away, under a constant sky",
         }
     }
 
@@ -139,6 +153,11 @@ impl Lighting {
             Lighting::PointOnShadingPoint => Some(([0.0; 3], POINT.1)),
             _ => None,
         }
+    }
+
+    /// True when a sky of radiance [`SKY`] lights the floor too.
+    fn has_sky(self) -> bool {
+        matches!(self, Lighting::Sky | Lighting::FacingAway)
     }
 
     /// Where the estimate is made, on the floor (before scaling).
@@ -162,10 +181,16 @@ impl Lighting {
         let x = self.shading_point();
         let (light, radiance) = self.square();
         let hidden = projected_solid_angle(&light.map(|v| v - x));
-        let sky = if self == Lighting::Sky {
+        let sky = if self.has_sky() {
             SKY * (PI - hidden)
         } else {
             0.0
+        };
+        // A square facing away emits nothing this way.
+        let radiance = if self == Lighting::FacingAway {
+            0.0
+        } else {
+            radiance
         };
         // A point light at distance 0 lights nothing (see `PointOnShadingPoint`).
         let point = self.point_light().map_or(0.0, |(p, intensity)| {
@@ -181,12 +206,126 @@ impl Lighting {
     }
 }
 
-/// A Lambertian floor (albedo [`ALBEDO`]) at z = 0 under `lighting`. Every length is
-/// multiplied by `scale`, which must not change any radiance.
-fn scene(lighting: Lighting, scale: f32) -> Scene {
+/// The surface of [`Floor::Phong`].
+const PHONG: PhongSurface = PhongSurface {
+    kd: DVec3::new(0.5, 0.3, 0.1),
+    ks: DVec3::new(0.3, 0.5, 0.6),
+    exponent: 12.0,
+};
+/// The surface of [`Floor::BroadPhong`].
+const BROAD_PHONG: PhongSurface = PhongSurface {
+    kd: DVec3::new(0.1, 0.25, 0.05),
+    ks: DVec3::new(0.6, 0.5, 0.8),
+    exponent: 2.0,
+};
+/// Reflectance of [`Floor::Mirror`].
+const MIRROR: DVec3 = DVec3::new(0.9, 0.6, 0.3);
+/// Index of refraction of [`Floor::Glass`].
+const GLASS_IOR: f64 = 1.5;
+
+/// What the floor is made of.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Floor {
+    /// Lambertian, albedo [`ALBEDO`].
+    Diffuse,
+    /// The energy-normalised Phong BRDF of [`PHONG`], shaded along the normal (`wo = z`,
+    /// so the lobe is `cos^n θ` around the normal).
+    Phong,
+    /// The broad lobe of [`BROAD_PHONG`] shaded from 70° on the far side of the light:
+    /// about half of its BSDF samples fall below the horizon and fail, while its light
+    /// samples still count.
+    BroadPhong,
+    /// A perfect mirror of reflectance [`MIRROR`], shaded from the direction that
+    /// reflects onto the centre of the errata's square.
+    Mirror,
+    /// Smooth glass of index [`GLASS_IOR`] (a delta BSDF that reflects or refracts at
+    /// random), shaded from the mirror's direction: it reflects the square with the
+    /// Fresnel reflectance, and what it refracts leaves below the floor into the dark.
+    Glass,
+}
+
+impl Floor {
+    /// The floor's material in YAML.
+    fn yaml(self) -> String {
+        let rgb = |c: DVec3| format!("[{}, {}, {}]", c.x, c.y, c.z);
+        match self {
+            Floor::Diffuse => format!("{{diffuse: {{albedo: {ALBEDO}}}}}"),
+            Floor::Phong => PHONG.yaml(),
+            Floor::BroadPhong => BROAD_PHONG.yaml(),
+            Floor::Mirror => format!("{{mirror: {{reflectance: {}}}}}", rgb(MIRROR)),
+            Floor::Glass => format!("{{dielectric: {{ior: {GLASS_IOR}}}}}"),
+        }
+    }
+
+    /// The direction `mis` is asked about (away from the floor).
+    fn wo(self) -> Vec3 {
+        match self {
+            Floor::Mirror | Floor::Glass => Vec3::new(-1.0, 0.0, 1.0).normalize(),
+            Floor::Diffuse | Floor::Phong => Vec3::Z,
+            Floor::BroadPhong => Vec3::new(-0.939_692_6, 0.0, 0.342_020_14),
+        }
+    }
+
+    /// What the check's name calls it.
+    fn describe(self) -> &'static str {
+        match self {
+            Floor::Diffuse => "",
+            Floor::Phong => " on a glossy phong floor",
+            Floor::BroadPhong => " on a broad phong lobe seen at 70° (bsdf samples fail)",
+            Floor::Mirror => " on a mirror floor",
+            Floor::Glass => " on a glass floor",
+        }
+    }
+
+    /// The exact direct light at the shading point of `lighting` towards [`Floor::wo`],
+    /// channels weighted by [`CHANNEL_WEIGHTS`]. Defined for the lightings each floor is
+    /// graded under: every one for [`Floor::Diffuse`], the errata's open square and the
+    /// sky for the Phong floors, the open square for [`Floor::Mirror`] and [`Floor::Glass`].
+    fn analytic(self, lighting: Lighting) -> f64 {
+        match self {
+            Floor::Diffuse => lighting.analytic(),
+            Floor::Phong | Floor::BroadPhong => {
+                assert!(matches!(lighting, Lighting::Open | Lighting::Sky));
+                let surface = if self == Floor::Phong {
+                    PHONG
+                } else {
+                    BROAD_PHONG
+                };
+                let wo = self.wo().as_dvec3();
+                let (light, radiance) = lighting.square();
+                // `∫ f cos θ dω` over the square and over the hemisphere; the sky lights all
+                // of it but the square.
+                let square = surface.over(wo, light);
+                let sky = if lighting.has_sky() { SKY } else { 0.0 };
+                CHANNEL_WEIGHTS.dot(square * (radiance - sky) + surface.albedo(wo) * sky)
+            }
+            Floor::Mirror => {
+                assert_eq!(lighting, Lighting::Open);
+                // The mirror direction of `wo` is (1, 0, 1)/√2: it meets the square at its
+                // centre (1, 0, 1), from below, where it emits radiance 1.
+                CHANNEL_WEIGHTS.dot(MIRROR * lighting.square().1)
+            }
+            Floor::Glass => {
+                assert_eq!(lighting, Lighting::Open);
+                // The reflection at 45° sees the square as the mirror does; its probability
+                // is the exact Fresnel reflectance, and its weight 1.
+                fresnel_dielectric_f64(0.5f64.sqrt(), 1.0, GLASS_IOR) * lighting.square().1
+            }
+        }
+    }
+}
+
+/// A floor at z = 0 under `lighting`. Every length is multiplied by `scale`, which must not
+/// change any radiance.
+fn scene(lighting: Lighting, scale: f32, floor: Floor) -> Scene {
     let s = |x: f32| x * scale;
+    // A quad faces `edge1 × edge2`: down for the squares, unless it faces away.
+    let faces_away = lighting == Lighting::FacingAway;
     let quad = |v: &[Vec3; 4], what: &str| {
-        let (o, e1, e2) = (v[0] * scale, (v[3] - v[0]) * scale, (v[1] - v[0]) * scale);
+        let (o, mut e1, mut e2) = (v[0] * scale, (v[3] - v[0]) * scale, (v[1] - v[0]) * scale);
+        if faces_away {
+            std::mem::swap(&mut e1, &mut e2);
+        }
         format!(
             "  - quad: {{origin: [{}, {}, {}], edge1: [{}, {}, {}], edge2: [{}, {}, {}], {what}}}\n",
             o.x, o.y, o.z, e1.x, e1.y, e1.z, e2.x, e2.y, e2.z
@@ -196,7 +335,7 @@ fn scene(lighting: Lighting, scale: f32) -> Scene {
         "camera: {{eye: [0, 0, {e}], target: [0, 0, 0], up: [0, 1, 0], fov: 60, width: 4, height: 4}}
 render: {{spp: 1, max_depth: 2, strategy: mis, heuristic: power, seed: 0}}
 materials:
-  floor: {{diffuse: {{albedo: {ALBEDO}}}}}
+  floor: {floor}
   black: {{diffuse: {{albedo: 0}}}}
 shapes:
   - quad: {{origin: [{a}, {a}, 0], edge1: [{b}, 0, 0], edge2: [0, {b}, 0], material: floor}}
@@ -204,6 +343,7 @@ shapes:
         e = s(3.0),
         a = s(-3.0),
         b = s(6.0),
+        floor = floor.yaml(),
     );
     let (light, radiance) = lighting.square();
     text += &quad(light, &format!("emission: {radiance}"));
@@ -218,7 +358,9 @@ shapes:
                 h = s(2.0),
             )
         }
-        Lighting::Sky => text += &format!("lights:\n  - environment: {{radiance: {SKY}}}\n"),
+        Lighting::Sky | Lighting::FacingAway => {
+            text += &format!("lights:\n  - environment: {{radiance: {SKY}}}\n")
+        }
         _ => {}
     }
     if let Some(([x, y, z], intensity)) = lighting.point_light() {
@@ -250,18 +392,19 @@ fn shading_hit(scene: &Scene, point: Vec3) -> Hit {
         .expect("the probe ray hits the floor at the shading point")
 }
 
-/// One call of `mis` at `point` on the floor, looking straight up; the mean of the three
-/// channels.
+/// One call of `mis` at `point` on the floor towards `wo`; the channels weighted by
+/// [`CHANNEL_WEIGHTS`].
 fn direct_light<'a, T: Tasks>(
     t: &'a T,
     scene: Scene,
     point: Vec3,
+    wo: Vec3,
     heuristic: Heuristic,
 ) -> Box<super::super::estimator::Estimator<'a>> {
     let hit = shading_hit(&scene, point);
     Box::new(move |s: &mut Sampler| {
-        let direct = t.mis(&scene, &hit, Vec3::Z, heuristic, s);
-        Ok(direct.radiance.element_sum() as f64 / 3.0)
+        let direct = t.mis(&scene, &hit, wo, heuristic, s);
+        Ok(direct.radiance.as_dvec3().dot(CHANNEL_WEIGHTS))
     })
 }
 
@@ -276,6 +419,16 @@ fn spec<T: Tasks>(
     scale: f32,
     heuristic: Heuristic,
 ) -> EstimatorSpec<'_> {
+    spec_on(t, Floor::Diffuse, lighting, scale, heuristic)
+}
+
+fn spec_on<T: Tasks>(
+    t: &T,
+    floor: Floor,
+    lighting: Lighting,
+    scale: f32,
+    heuristic: Heuristic,
+) -> EstimatorSpec<'_> {
     let units = if scale == 1.0 {
         String::new()
     } else {
@@ -283,16 +436,24 @@ fn spec<T: Tasks>(
     };
     EstimatorSpec {
         name: format!(
-            "direct light from {}, {heuristic:?} weights{units}",
-            lighting.describe()
+            "direct light from {}{}, {heuristic:?} weights{units}",
+            lighting.describe(),
+            floor.describe()
         )
         .to_lowercase(),
-        analytic: lighting.analytic(),
-        samples: 100_000,
+        analytic: floor.analytic(lighting),
+        // The errata's Lambertian floor carries the declared power; the other floors are
+        // there for the classes of mistakes they show, which bias far more than 0.5 %.
+        samples: if floor == Floor::Diffuse {
+            100_000
+        } else {
+            40_000
+        },
         estimate: direct_light(
             t,
-            scene(lighting, scale),
+            scene(lighting, scale, floor),
             lighting.shading_point(),
+            floor.wo(),
             heuristic,
         ),
     }
@@ -312,7 +473,71 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         spec(t, Sky, 1.0, Heuristic::Light),
         spec(t, PointLight, 1.0, Heuristic::Power),
         spec(t, PointOnShadingPoint, 1.0, Heuristic::Power),
+        EstimatorSpec {
+            samples: 40_000,
+            ..spec(t, PointLight, 1.0, Heuristic::Bsdf)
+        },
+        EstimatorSpec {
+            samples: 40_000,
+            ..spec(t, FacingAway, 1.0, Heuristic::Power)
+        },
+        spec_on(t, Floor::Phong, Open, 1.0, Heuristic::Power),
+        spec_on(t, Floor::Phong, Open, 1.0, Heuristic::Bsdf),
+        spec_on(t, Floor::Phong, Sky, 1.0, Heuristic::Balance),
+        spec_on(t, Floor::Phong, Sky, 1.0, Heuristic::Light),
+        spec_on(t, Floor::BroadPhong, Open, 1.0, Heuristic::Power),
+        spec_on(t, Floor::BroadPhong, Sky, 1.0, Heuristic::Light),
+        spec_on(t, Floor::Mirror, Open, 1.0, Heuristic::Power),
+        spec_on(t, Floor::Mirror, Open, 1.0, Heuristic::Light),
+        spec_on(t, Floor::Glass, Open, 1.0, Heuristic::Power),
+        whole_path(
+            t,
+            "a white furnace (ρ = 0.5), light weights: Le/(1 − ρ)",
+            path_trace::furnace_around(DVec3::splat(0.5), &render("light"), None),
+            |s| uniform_sphere(s.next_2d()),
+            2.0 * path_trace::EMISSION,
+        ),
+        whole_path(
+            t,
+            "a furnace with ρ = (0.8, 0.4, 0), power weights: Le/(1 − ρ) per channel",
+            path_trace::furnace_around(DVec3::new(0.8, 0.4, 0.0), &render("mis, heuristic: power"), None),
+            |s| uniform_sphere(s.next_2d()),
+            CHANNEL_WEIGHTS.dot(path_trace::EMISSION / DVec3::new(0.2, 0.6, 1.0)),
+        ),
+        whole_path(
+            t,
+            "a phong floor under emitters that reflect nothing, balance weights: Le (kd + ks)",
+            path_trace::phong_floor_box(&path_trace::PHONG, &render("mis, heuristic: balance")),
+            |_| Vec3::NEG_Y,
+            CHANNEL_WEIGHTS.dot(path_trace::EMISSION * (path_trace::PHONG.kd + path_trace::PHONG.ks)),
+        ),
     ]
+}
+
+/// Render settings for [`whole_path`]: unbounded, roulette from the first bounce on, the
+/// direct-light `strategy` as the scene format names it (`light`, `bsdf`, or `mis,
+/// heuristic: power`).
+fn render(strategy: &str) -> String {
+    format!("{{spp: 1, max_depth: ~, rr_depth: 1, strategy: {strategy}, seed: 0}}")
+}
+
+/// A whole path from the origin in a direction drawn by `direction` by the reference's `path_trace`, which
+/// calls the `mis` under test at every bounce and continues along the bounce it returns:
+/// what `mis` returns beside its radiance (the bounce's weight, its traced segment and
+/// `emission_counted`) decides the rest of the path.
+fn whole_path<'a, T: Tasks>(
+    t: &'a T,
+    what: &str,
+    scene: Scene,
+    direction: fn(&mut Sampler) -> Vec3,
+    analytic: f64,
+) -> EstimatorSpec<'a> {
+    EstimatorSpec {
+        name: format!("a whole path through {what}"),
+        analytic,
+        samples: 40_000,
+        estimate: path_trace::path_estimator(t, scene, Vec3::ZERO, direction),
+    }
 }
 
 /// The same estimator in the same scene in two units of length: its variance must not
@@ -343,7 +568,7 @@ mod tests {
     fn every_lighting_is_a_valid_scene_at_both_scales() {
         for lighting in Lighting::ALL {
             for scale in [1.0, 1000.0] {
-                let scene = scene(lighting, scale);
+                let scene = scene(lighting, scale, Floor::Diffuse);
                 assert!((scene_scale(&scene) - scale).abs() < 1e-3 * scale);
                 let hit = shading_hit(&scene, lighting.shading_point());
                 assert!((hit.p - lighting.shading_point() * scale).length() < 1e-3 * scale);
@@ -353,7 +578,7 @@ mod tests {
 
     #[test]
     fn the_point_light_lies_exactly_on_its_shading_point() {
-        let scene = scene(Lighting::PointOnShadingPoint, 1.0);
+        let scene = scene(Lighting::PointOnShadingPoint, 1.0, Floor::Diffuse);
         let hit = shading_hit(&scene, Lighting::PointOnShadingPoint.shading_point());
         let mut sampler = Sampler::new(0, 0);
         let on_point = (0..64).any(|_| {

@@ -6,6 +6,7 @@
 //! for hidden cases, computed live.
 
 mod indices;
+mod phong_floor;
 mod polygon;
 
 use super::call::{Call, SampleCall};
@@ -404,6 +405,12 @@ pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<Valu
 pub fn sampling_setups(task: TaskId) -> Vec<SampleCall> {
     setups_of(task)
 }
+
+/// How an estimator of radiance (RGB) turns it into one number: a weighted sum whose
+/// weights differ per channel and sum to 1. A grey radiance keeps its value, and in a
+/// coloured scene code that mixes up channels (uses one channel for all, or a scalar
+/// where the contract has a colour) changes the mean.
+pub const CHANNEL_WEIGHTS: glam::DVec3 = glam::DVec3::new(1.0 / 7.0, 2.0 / 7.0, 4.0 / 7.0);
 
 /// An estimator with a known mean, built on an implementation's task functions.
 pub struct EstimatorSpec<'a> {

@@ -5,8 +5,12 @@
 use super::patch::{Patch, Variant, variant as different};
 use glam::{Vec2, Vec3};
 use pbrlab::bsdf::PlausibilityReport;
+use pbrlab::geometry::Ray;
+use pbrlab::integrator::Segment;
+use pbrlab::medium::{FreeFlight, Medium};
 use pbrlab::optics::{StackReport, fresnel_dielectric_f64};
 use pbrlab::sampling::Sampler;
+use pbrlab::scene::Scene;
 use pbrlab::worksheet::{TaskId, Tasks};
 use std::f32::consts::{FRAC_1_PI, PI, TAU};
 
@@ -357,7 +361,100 @@ pub fn catalogue() -> Vec<Variant> {
             BrdfCheck,
             |p| p.brdf_check = Some(cosine_weighted_check),
         ),
+        different(
+            "roulette with a fixed q = 0.9 before the direct light, dividing both",
+            PathTrace,
+            |p| p.path_trace = Some(roulette_first),
+        ),
+        different(
+            "delta tracking that counts a step only once it is inside the segment",
+            DeltaTracking,
+            |p| p.delta_tracking = Some(count_after_escape_test),
+        ),
     ]
+}
+
+/// `path_trace` with Russian roulette at the start of a step (from depth 3 on), with a fixed
+/// survival probability, dividing the direct light and the continuation alike.
+fn roulette_first(
+    t: &Patch,
+    scene: &Scene,
+    segment: &Segment,
+    depth: i32,
+    sampler: &mut Sampler,
+) -> Vec3 {
+    const Q: f32 = 0.9;
+    if depth <= 0 {
+        return Vec3::ZERO;
+    }
+    let Some(hit) = &segment.hit else {
+        return if segment.emission_counted {
+            Vec3::ZERO
+        } else {
+            scene.environment(segment.ray.dir)
+        };
+    };
+    let wo = -segment.ray.dir;
+    let emitted = if segment.emission_counted {
+        Vec3::ZERO
+    } else {
+        scene.emitted(hit, wo)
+    };
+    if depth == 1 {
+        return emitted;
+    }
+    let mut scale = 1.0;
+    if depth >= 3 && scene.settings().roulette_applies(depth) {
+        if sampler.next_1d() >= Q {
+            return emitted;
+        }
+        scale = 1.0 / Q;
+    }
+    let direct = t.mis(scene, hit, wo, scene.heuristic(), sampler);
+    let mut rest = direct.radiance;
+    if depth >= 3
+        && let Some(b) = &direct.bounce
+    {
+        rest += b.weight * t.path_trace(scene, &b.segment, depth - 1, sampler);
+    }
+    emitted + rest * scale
+}
+
+/// Delta tracking that tests for an escape before it counts the step, so that it gives up
+/// only when the step after `max_steps` null collisions lands inside the segment (the
+/// other reading of "after `max_steps` tentative collisions"), and picks absorption or
+/// scattering with a second random number.
+fn count_after_escape_test(
+    medium: &dyn Medium,
+    ray: &Ray,
+    t_max: f32,
+    max_steps: u32,
+    sampler: &mut Sampler,
+) -> FreeFlight {
+    let majorant = medium.majorant();
+    if majorant.is_nan() || majorant <= 0.0 {
+        return FreeFlight::Escape;
+    }
+    let (mut t, mut taken) = (0.0f32, 0u32);
+    loop {
+        t -= (1.0 - sampler.next_1d()).ln() / majorant;
+        if t >= t_max {
+            return FreeFlight::Escape;
+        }
+        if taken >= max_steps {
+            return FreeFlight::Exhausted;
+        }
+        taken += 1;
+        let c = medium.coefficients(ray.at(t));
+        let sigma_t = c.sigma_a + c.sigma_s;
+        if sampler.next_1d() * majorant < sigma_t {
+            return if sampler.next_1d() * sigma_t < c.sigma_a {
+                FreeFlight::Absorb { t }
+            } else {
+                FreeFlight::Scatter { t }
+            };
+        }
+    }
 }
 
 /// `wo` mirrored about the microfacet normal `h`, when `h` faces `wo` and the mirror

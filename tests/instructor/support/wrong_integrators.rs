@@ -28,6 +28,15 @@ enum PathFlaw {
     UncappedSurvival,
     /// The roulette test inverted: the path ends with probability q instead of 1 − q.
     InvertedRoulette,
+    /// The sheet's `depth == 0` test: a depth below 0 goes on.
+    OnlyDepthZeroStops,
+    /// A survival probability from the smallest channel of the weight: a channel that
+    /// reflects nothing ends every path.
+    SurvivalFromSmallestChannel,
+    /// The throughput kept as one number (the weight's largest channel).
+    ScalarThroughput,
+    /// Black returned when `mis` gives no bounce, losing the light gathered so far.
+    BlackWithoutBounce,
 }
 
 fn path_variant(
@@ -38,7 +47,7 @@ fn path_variant(
     sampler: &mut Sampler,
     flaw: PathFlaw,
 ) -> Vec3 {
-    if depth <= 0 {
+    if depth <= 0 && !(flaw == PathFlaw::OnlyDepthZeroStops && depth < 0) {
         return Vec3::ZERO;
     }
     let counted = segment.emission_counted && flaw != PathFlaw::EmissionTwice;
@@ -63,15 +72,24 @@ fn path_variant(
         radiance += direct.radiance;
     }
     let Some(bounce) = direct.bounce else {
-        return radiance;
+        return if flaw == PathFlaw::BlackWithoutBounce {
+            Vec3::ZERO
+        } else {
+            radiance
+        };
     };
     if depth == 2 {
         return radiance;
     }
-    let mut weight = bounce.weight;
+    let mut weight = if flaw == PathFlaw::ScalarThroughput {
+        Vec3::splat(bounce.weight.max_element())
+    } else {
+        bounce.weight
+    };
     if scene.settings().roulette_applies(depth) {
         let q = match flaw {
             PathFlaw::UncappedSurvival => weight.max_element(),
+            PathFlaw::SurvivalFromSmallestChannel => weight.min_element().min(0.95),
             _ => weight.max_element().min(0.95),
         };
         let u = sampler.next_1d();
@@ -126,6 +144,16 @@ enum MisFlaw {
     UnguardedPointLight,
     /// An environment sample never tested for occlusion.
     UnoccludedSky,
+    /// The light sample's MIS weight with the Lambertian density `cos θ / π` for the BSDF's
+    /// (right on diffuse surfaces only).
+    LambertianPdfInWeight,
+    /// Point lights skipped under BSDF weights, like area lights.
+    NoPointLightsUnderBsdfWeights,
+    /// Area lights taken as two-sided (`|cos θl|`).
+    TwoSidedLights,
+    /// The bounce returned with `emission_counted: false`, so the caller adds the light it
+    /// reaches again.
+    BounceEmissionNotCounted,
 }
 
 /// The MIS weight of a sample drawn with density `a` when the other strategy has `b`, as
@@ -196,7 +224,7 @@ fn mis_variant(
             segment: Segment {
                 ray,
                 hit: next,
-                emission_counted: true,
+                emission_counted: flaw != MisFlaw::BounceEmissionNotCounted,
             },
         }),
     }
@@ -221,7 +249,9 @@ fn light_sample(
             pdf_area,
         } => (p, n, radiance, pdf_area),
         LightSample::Point { p, intensity, prob } => {
-            if flaw == MisFlaw::NoPointLights {
+            if flaw == MisFlaw::NoPointLights
+                || (flaw == MisFlaw::NoPointLightsUnderBsdfWeights && heuristic == Heuristic::Bsdf)
+            {
                 return Vec3::ZERO;
             }
             let d = if flaw == MisFlaw::PointLightFromOrigin {
@@ -260,7 +290,11 @@ fn light_sample(
     let d = p - hit.p;
     let dist2 = d.length_squared();
     let wi = d / dist2.sqrt();
-    let cos_l = -n.dot(wi);
+    let cos_l = if flaw == MisFlaw::TwoSidedLights {
+        n.dot(wi).abs()
+    } else {
+        -n.dot(wi)
+    };
     if cos_l <= 0.0 {
         return Vec3::ZERO;
     }
@@ -284,7 +318,12 @@ fn light_sample(
     } else {
         le
     };
-    f * le * (weight(heuristic, true, pdf_in_weight, bsdf.pdf(t, wo, wi), flaw) / pdf_light)
+    let bsdf_pdf = if flaw == MisFlaw::LambertianPdfInWeight {
+        hit.n.dot(wi).abs() * std::f32::consts::FRAC_1_PI
+    } else {
+        bsdf.pdf(t, wo, wi)
+    };
+    f * le * (weight(heuristic, true, pdf_in_weight, bsdf_pdf, flaw) / pdf_light)
 }
 
 /// How a `delta_tracking` variant goes wrong.
@@ -300,6 +339,12 @@ enum TrackingFlaw {
     UnguardedNanMajorant,
     /// A walk that ran out of steps reported as an escape.
     ExhaustedAsEscape,
+    /// The medium looked up at `t · dir`, as if every ray started at the origin.
+    RayFromOrigin,
+    /// One tentative collision fewer than `max_steps`.
+    OneStepShort,
+    /// One tentative collision more than `max_steps`.
+    OneStepTooMany,
 }
 
 fn tracking_variant(
@@ -317,7 +362,12 @@ fn tracking_variant(
     }
     let reused = (sampler.next_1d(), sampler.next_1d());
     let mut t = 0.0f32;
-    for _ in 0..max_steps {
+    let steps = match flaw {
+        TrackingFlaw::OneStepShort => max_steps.saturating_sub(1),
+        TrackingFlaw::OneStepTooMany => max_steps.saturating_add(1),
+        _ => max_steps,
+    };
+    for _ in 0..steps {
         let (u0, u1) = if flaw == TrackingFlaw::ReusedRandomNumbers {
             reused
         } else {
@@ -331,7 +381,11 @@ fn tracking_variant(
                 FreeFlight::Escape
             };
         }
-        let c = medium.coefficients(ray.at(t));
+        let c = medium.coefficients(if flaw == TrackingFlaw::RayFromOrigin {
+            ray.dir * t
+        } else {
+            ray.at(t)
+        });
         let scale = if flaw == TrackingFlaw::NoNullCollisions {
             c.sigma_t()
         } else {
@@ -450,6 +504,80 @@ pub fn catalogue() -> Vec<Variant> {
             |p| {
                 p.mis = Some(|t, s, h, wo, he, sa| {
                     mis_variant(t, s, h, wo, he, sa, MisFlaw::UnoccludedSky)
+                })
+            },
+        ),
+        wrong("`depth == 0` as the only stop", PathTrace, |p| {
+            p.path_trace = Some(|t, s, seg, d, sa| {
+                path_variant(t, s, seg, d, sa, PathFlaw::OnlyDepthZeroStops)
+            })
+        }),
+        wrong("survival from the smallest channel", PathTrace, |p| {
+            p.path_trace = Some(|t, s, seg, d, sa| {
+                path_variant(t, s, seg, d, sa, PathFlaw::SurvivalFromSmallestChannel)
+            })
+        }),
+        wrong("a scalar throughput", PathTrace, |p| {
+            p.path_trace =
+                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::ScalarThroughput))
+        }),
+        wrong("black where mis gives no bounce", PathTrace, |p| {
+            p.path_trace = Some(|t, s, seg, d, sa| {
+                path_variant(t, s, seg, d, sa, PathFlaw::BlackWithoutBounce)
+            })
+        }),
+        wrong(
+            "the Lambertian density in the light sample's weight",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::LambertianPdfInWeight)
+                })
+            },
+        ),
+        wrong("point lights skipped under BSDF weights", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLightsUnderBsdfWeights)
+            })
+        }),
+        wrong("area lights taken as two-sided", Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| {
+                mis_variant(t, s, h, wo, he, sa, MisFlaw::TwoSidedLights)
+            })
+        }),
+        wrong(
+            "the bounce returned with its emission not counted",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::BounceEmissionNotCounted)
+                })
+            },
+        ),
+        wrong(
+            "the medium looked up as if the ray started at the origin",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::RayFromOrigin)
+                })
+            },
+        ),
+        wrong(
+            "one tentative collision fewer than allowed",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::OneStepShort)
+                })
+            },
+        ),
+        wrong(
+            "one tentative collision more than allowed",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::OneStepTooMany)
                 })
             },
         ),
