@@ -13,7 +13,8 @@
 //!   ([`crate::sampling::uniform_hemisphere`], pdf
 //!   [`crate::sampling::uniform_hemisphere_pdf`]), and keep the largest. Reducing the
 //!   variance is worth it (stratify the samples): a Lambertian BRDF with albedo exactly 1
-//!   should not look like it creates energy because of noise.
+//!   should not look like it creates energy because of noise. `worst_wi` is that incident
+//!   direction as `brdf` takes it: unit, above the surface, pointing away from it.
 //! - `min_value`: the smallest BRDF value among everything you evaluated.
 //!
 //! ## Where to look

@@ -104,7 +104,11 @@ impl ValueCase {
                     ))
                 }
             }
-            Rule::Plausibility { albedo } => judge_plausibility(got, &self.expected, albedo),
+            Rule::Plausibility { albedo } => judge_plausibility(got, &self.expected, albedo)
+                .and_then(|error| {
+                    judge_worst_wi(got, &self.call)?;
+                    Ok(error)
+                }),
             Rule::Unity { tolerance, share } => judge_unity(got, tolerance, share),
         }
     }
@@ -230,6 +234,53 @@ fn judge_plausibility(
     } else {
         Err(problems.join("; "))
     }
+}
+
+/// Judges the `worst_wi` of a plausibility report: a unit incident direction above the
+/// surface where, for a test BRDF with a closed-form albedo, that albedo is the reported
+/// `max_albedo` (within 25 %, Monte Carlo noise and the maximum over directions).
+fn judge_worst_wi(got: &Output, call: &Call) -> Result<(), String> {
+    let Call::BrdfCheck { brdf, .. } = call else {
+        return Ok(());
+    };
+    let (Some(Output::Numbers(w)), Some(reported)) = (
+        got.field("worst_wi"),
+        got.field("max_albedo").and_then(Output::as_number),
+    ) else {
+        return Err(format!(
+            "got {got}, expected a report with worst_wi and max_albedo"
+        ));
+    };
+    let &[x, y, z] = w.as_slice() else {
+        return Err(format!("worst_wi has {} components, expected 3", w.len()));
+    };
+    if !reported.is_finite() {
+        return Ok(());
+    }
+    let w = glam::DVec3::new(x, y, z);
+    if !((w.length() - 1.0).abs() <= 1e-3 && w.z > 0.0) {
+        return Err(format!(
+            "worst_wi = ({}, {}, {}) is not a unit incident direction above the surface \
+             (local frame, pointing away from it)",
+            fmt_num(x),
+            fmt_num(y),
+            fmt_num(z)
+        ));
+    }
+    if let Some(exact) = brdf.albedo(w.as_vec3())
+        && (exact - reported).abs() > 0.25 * exact.max(reported) + 1e-6
+    {
+        return Err(format!(
+            "max_albedo = {} was reported at worst_wi = ({}, {}, {}), where the albedo is {}: \
+             the direction is not the one the largest albedo was measured at",
+            fmt_num(reported),
+            fmt_num(x),
+            fmt_num(y),
+            fmt_num(z),
+            fmt_num(exact)
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

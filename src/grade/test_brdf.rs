@@ -40,6 +40,10 @@ pub enum TestBrdf {
     /// `2/π` where `cos θi > cos θo`, else `1/π`: every pair with distinct cosines has the
     /// relative reciprocity gap exactly 1/2, however the pairs are drawn.
     Lopsided,
+    /// Lambert with albedo 1/2, but +∞ where `cos θi cos θo < 0.05`: symmetric, and equal
+    /// both ways round where it is infinite, yet a value no test may call reciprocal or
+    /// plausible.
+    InfiniteNearGrazing,
 }
 
 impl TestBrdf {
@@ -59,6 +63,32 @@ impl TestBrdf {
             TestBrdf::NanOneWayRound => 0.5 * FRAC_1_PI,
             TestBrdf::Lopsided if wi.z > wo.z => 2.0 * FRAC_1_PI,
             TestBrdf::Lopsided => FRAC_1_PI,
+            TestBrdf::InfiniteNearGrazing if wi.z * wo.z < 0.05 => f32::INFINITY,
+            TestBrdf::InfiniteNearGrazing => 0.5 * FRAC_1_PI,
+        }
+    }
+
+    /// The exact directional albedo `∫ f(wi, wo) cos θo dωo` at the incident direction `wi`
+    /// (local frame), where it has a closed form: `None` for the BRDFs whose albedo is
+    /// NaN, infinite or has none, and for `wi` at or below the surface.
+    pub fn albedo(&self, wi: Vec3) -> Option<f64> {
+        let cos = wi.normalize_or_zero().z as f64;
+        if cos <= 0.0 {
+            return None;
+        }
+        match *self {
+            TestBrdf::Lambert { albedo } => Some(albedo as f64),
+            // `∫ (wi·wo)^n dωo` over the hemisphere is `2π/(n + 1)` for even n, whatever wi.
+            TestBrdf::CosinePower { k, n } if n % 2 == 0 => {
+                Some(std::f64::consts::TAU * k as f64 / ((n + 1) as f64 * cos))
+            }
+            TestBrdf::IncidentOnly => Some(0.5 * cos),
+            TestBrdf::ScaledIncidentOnly { scale } => Some(scale as f64 * 0.5 * cos),
+            TestBrdf::CosinePower { .. }
+            | TestBrdf::NanNearGrazing
+            | TestBrdf::NanOneWayRound
+            | TestBrdf::Lopsided
+            | TestBrdf::InfiniteNearGrazing => None,
         }
     }
 
@@ -76,6 +106,7 @@ impl TestBrdf {
             TestBrdf::NanNearGrazing => "Lambert 1/2, NaN where cos θi cos θo < 0.05".into(),
             TestBrdf::NanOneWayRound => "Lambert 1/2, NaN where cos θi > cos θo".into(),
             TestBrdf::Lopsided => "2/π where cos θi > cos θo, else 1/π".into(),
+            TestBrdf::InfiniteNearGrazing => "Lambert 1/2, +∞ where cos θi cos θo < 0.05".into(),
         }
     }
 }
@@ -96,5 +127,34 @@ mod tests {
         assert_eq!((ab - ba).abs() / ab.max(ba), 0.5);
         let n = TestBrdf::NanOneWayRound;
         assert!(n.eval(b, a).is_nan() && n.eval(a, b).is_finite());
+        let grazing = Vec3::new(0.999, 0.0, 0.01).normalize();
+        let i = TestBrdf::InfiniteNearGrazing;
+        assert_eq!(i.eval(grazing, a), f32::INFINITY);
+        assert_eq!(i.eval(a, grazing), f32::INFINITY);
+    }
+
+    /// The closed-form albedos agree with Monte Carlo over the hemisphere.
+    #[test]
+    fn the_closed_form_albedos_match_monte_carlo() {
+        use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
+        let wi = Vec3::new(0.8, 0.0, 0.6);
+        for brdf in [
+            TestBrdf::Lambert { albedo: 0.7 },
+            TestBrdf::CosinePower { k: 0.2, n: 2 },
+            TestBrdf::CosinePower { k: 0.2, n: 4 },
+            TestBrdf::IncidentOnly,
+        ] {
+            let mut s = Sampler::new(4, 0);
+            let n = 200_000;
+            let mc = (0..n)
+                .map(|_| {
+                    let wo = uniform_hemisphere(s.next_2d());
+                    (brdf.eval(wi, wo) * wo.z / uniform_hemisphere_pdf()) as f64
+                })
+                .sum::<f64>()
+                / n as f64;
+            let exact = brdf.albedo(wi).expect("a closed form");
+            assert!((mc / exact - 1.0).abs() < 0.01, "{brdf:?}: {mc} vs {exact}");
+        }
     }
 }

@@ -67,7 +67,30 @@ pub fn fixed() -> Vec<CaseInput> {
             None,
         )
         .note("a NaN must reach the report: f32::min and max skip it"),
+        check(
+            "a BRDF that gains energy only beyond 88°",
+            TestBrdf::CosinePower {
+                k: grazing_only_k(0.03, 2),
+                n: 2,
+            },
+            16,
+            None,
+        )
+        .note("its albedo 0.03/cos θi is below 1 up to 88.3°: test 89° and 89.9° as the text says"),
+        check(
+            "a BRDF that is +∞ near grazing is not plausible",
+            TestBrdf::InfiniteNearGrazing,
+            17,
+            None,
+        )
+        .note("an infinite value is neither a finite albedo nor a measured reciprocity"),
     ]
+}
+
+/// The `k` that gives the even-`n` cosine-power BRDF the albedo `c / cos θi`: above 1 only
+/// beyond `acos(c)`, near grazing.
+fn grazing_only_k(c: f64, n: i32) -> f32 {
+    (c * (n + 1) as f64 / std::f64::consts::TAU) as f32
 }
 
 /// The declared domain of `brdf_check(brdf, sampler, samples)`: any BRDF closure over
@@ -104,7 +127,7 @@ pub const DOMAIN: &[Param] = &[
 ];
 
 /// Random checks per grading at most: each draws 20 000 samples per measurement.
-const RANDOM_CHECKS: usize = 4;
+const RANDOM_CHECKS: usize = 5;
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);
@@ -138,6 +161,19 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
                     seed,
                     None,
                 ),
+                3 => {
+                    // Albedo c / cos θi, above 1 only beyond acos(c) ∈ [85.4°, 88.9°].
+                    let c = 0.02 + 0.06 * d.unit();
+                    check(
+                        "k (wi·wo)² / (cos θi cos θo), gaining energy only near grazing",
+                        TestBrdf::CosinePower {
+                            k: grazing_only_k(c, 2),
+                            n: 2,
+                        },
+                        seed,
+                        None,
+                    )
+                }
                 _ => check("wi alone", TestBrdf::IncidentOnly, seed, None),
             }
         })

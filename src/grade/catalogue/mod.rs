@@ -347,13 +347,43 @@ const CONDITIONING_SAMPLES: u64 = 6;
 /// changes the output's shape (a `None` that becomes a value at a critical angle, a value
 /// that becomes non-finite) or panics: then correct f32 implementations may disagree on
 /// the shape itself.
+///
+/// Where the contract's answer on a boundary of its declared domain is exactly 0 (`h.z = 0`
+/// is "at or below the surface", so `D = 0`), an input that lies exactly on that boundary
+/// stays there: a move off it measures the other side of the boundary, not rounding, so
+/// such moves are left out, and with them the tolerance they would add, which would hide
+/// code that gets the boundary itself wrong. (An input that only rounds onto a boundary,
+/// like a unit vector near the normal whose z is 1 in f32, has a non-zero answer there and
+/// keeps every move.)
 fn conditioning(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
+    let on: Vec<(&Param, f64)> = if is_zero(expected) {
+        domain(call.task())
+            .iter()
+            .filter_map(|p| {
+                let v = (p.value)(call)?;
+                p.exact_values().any(|e| e == v).then_some((p, v))
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
     call.jitters(CONDITIONING_SAMPLES)
         .iter()
+        .filter(|jittered| on.iter().all(|(p, v)| (p.value)(jittered) == Some(*v)))
         .try_fold(0f64, |spread, jittered| {
             let out = panics::catch(|| jittered.eval(t)).ok()?;
             Some(spread.max(out.max_difference(expected)?))
         })
+}
+
+/// True when every number in `output` is exactly 0.
+fn is_zero(output: &Output) -> bool {
+    match output {
+        Output::Nothing => false,
+        Output::Number(x) => *x == 0.0,
+        Output::Numbers(v) => v.iter().all(|x| *x == 0.0),
+        Output::Record(fields) => fields.values().all(is_zero),
+    }
 }
 
 /// Evaluates `inputs` on `t` (the reference) into cases with expected outputs. Fails when

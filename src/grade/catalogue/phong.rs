@@ -98,6 +98,12 @@ pub fn fixed() -> Vec<CaseInput> {
         )
         .note("a NaN (or ∞) value must make the gap NaN or ∞: f32::max skips NaN"),
         gap(
+            "a BRDF that is +∞ both ways round near grazing cannot be called reciprocal",
+            TestBrdf::InfiniteNearGrazing,
+            8,
+        )
+        .note("two infinite values are not a measured agreement: the gap must be NaN or ∞"),
+        gap(
             "a BRDF that is NaN in one order of a pair only cannot be called reciprocal",
             TestBrdf::NanOneWayRound,
             6,

@@ -189,6 +189,21 @@ fn closed_form() -> Vec<Variant> {
         wrong("no zero below the horizon", AnisoNdf, |p| {
             p.aniso_ndf = Some(|h, ax, ay| ggx(Vec3::new(h.x, h.y, h.z.abs()), ax, ay))
         }),
+        wrong(
+            "`h.z < 0` for the horizon: h in the surface is not 0",
+            AnisoNdf,
+            |p| {
+                p.aniso_ndf = Some(|h, ax, ay| {
+                    if h.z == 0.0 {
+                        // The formula itself at hz = 0.
+                        let (x, y) = (h.x / ax, h.y / ay);
+                        1.0 / (PI * ax * ay * (x * x + y * y).powi(2))
+                    } else {
+                        ggx(h, ax, ay)
+                    }
+                })
+            },
+        ),
         // phong
         wrong("NaN-prone pow of a negative cosine", Phong, |p| {
             p.phong = Some(|t, wo, wi, params| {
@@ -252,6 +267,23 @@ fn closed_form() -> Vec<Variant> {
                             f32::INFINITY
                         } else if f_ab == f_ba {
                             0.0
+                        } else {
+                            (f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs())
+                        }
+                    })
+                })
+            },
+        ),
+        wrong(
+            "reciprocity gap that calls two equal infinities reciprocal",
+            Phong,
+            |p| {
+                p.reciprocity_gap = Some(|brdf, sampler, pairs| {
+                    largest_pair_gap(brdf, sampler, pairs, |f_ab, f_ba| {
+                        if f_ab == f_ba {
+                            0.0
+                        } else if !(f_ab.is_finite() && f_ba.is_finite()) {
+                            f32::INFINITY
                         } else {
                             (f_ab - f_ba).abs() / f_ab.abs().max(f_ba.abs())
                         }
@@ -401,6 +433,30 @@ fn closed_form() -> Vec<Variant> {
                 r
             })
         }),
+        wrong("energy tested up to 85° only", BrdfCheck, |p| {
+            p.brdf_check = Some(|t, brdf, sampler, samples| {
+                albedo_check(t, brdf, sampler, samples, &[0.0, 30.0, 60.0, 75.0, 85.0])
+            })
+        }),
+        wrong("worst_wi pointing into the surface", BrdfCheck, |p| {
+            p.brdf_check = Some(|t, brdf, sampler, samples| {
+                let mut r = sol::brdf_check::brdf_check(t, brdf, sampler, samples);
+                r.worst_wi = -r.worst_wi;
+                r
+            })
+        }),
+        wrong(
+            "worst_wi the last direction tried, not the worst",
+            BrdfCheck,
+            |p| {
+                p.brdf_check = Some(|t, brdf, sampler, samples| {
+                    let mut r = sol::brdf_check::brdf_check(t, brdf, sampler, samples);
+                    r.worst_wi =
+                        Vec3::new(89.9f32.to_radians().sin(), 0.0, 89.9f32.to_radians().cos());
+                    r
+                })
+            },
+        ),
         wrong("positivity of |f|", BrdfCheck, |p| {
             p.brdf_check = Some(|t, brdf, sampler, samples| {
                 let mut r = sol::brdf_check::brdf_check(t, brdf, sampler, samples);
