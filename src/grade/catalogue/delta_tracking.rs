@@ -15,7 +15,7 @@ use glam::Vec3;
 /// What the estimator and sampling checks of this task catch in at least 90 % of
 /// gradings, as measured by `pbrlab power` (asserted by tests/instructor/power.rs).
 pub const POWER: Declared = Declared {
-    estimator_bias: Some(0.02),
+    estimator_bias: Some(0.01),
     sampler_distortion: None,
 };
 
