@@ -132,6 +132,17 @@ fn capped_collision(sigma_x: f64, sigma_t: f64, majorant: f64, t_max: f64, steps
     total
 }
 
+/// The errata's M3: σ = (0.1, 0.9) on z < 0.5, (1.5, 0.5) beyond, majorant 2.
+fn m3() -> Slabs {
+    Slabs {
+        slabs: vec![
+            (0.5, coefficients(0.1, 0.9)),
+            (f32::INFINITY, coefficients(1.5, 0.5)),
+        ],
+        majorant: 2.0,
+    }
+}
+
 fn coefficients(sigma_a: f32, sigma_s: f32) -> Coefficients {
     Coefficients { sigma_a, sigma_s }
 }
@@ -228,14 +239,7 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         slabs: vec![(f32::INFINITY, coefficients(0.5, 0.5))],
         majorant: 2.0,
     };
-    // M3: σ = (0.1, 0.9) on [0, 0.5), (1.5, 0.5) on [0.5, 1), majorant 2.
-    let m3 = Slabs {
-        slabs: vec![
-            (0.5, coefficients(0.1, 0.9)),
-            (f32::INFINITY, coefficients(1.5, 0.5)),
-        ],
-        majorant: 2.0,
-    };
+    let m3 = m3();
     // M4: a pure scatterer, σs = 1, majorant 1: nothing is ever absorbed.
     let m4 = Slabs {
         slabs: vec![(f32::INFINITY, coefficients(0.0, 1.0))],
@@ -402,13 +406,7 @@ mod tests {
     /// The piecewise integration gives the errata's closed forms along the unit segment.
     #[test]
     fn the_slab_integral_matches_the_closed_forms() {
-        let m3 = Slabs {
-            slabs: vec![
-                (0.5, coefficients(0.1, 0.9)),
-                (f32::INFINITY, coefficients(1.5, 0.5)),
-            ],
-            majorant: 2.0,
-        };
+        let m3 = m3();
         let e_half = (-0.5f64).exp();
         let first = 1.0 - e_half;
         let second = e_half * (1.0 - (-1.0f64).exp());
@@ -457,13 +455,7 @@ mod tests {
     /// along a segment that crosses the slabs obliquely.
     #[test]
     fn the_slab_integral_matches_a_quadrature() {
-        let m3 = Slabs {
-            slabs: vec![
-                (0.5, coefficients(0.1, 0.9)),
-                (f32::INFINITY, coefficients(1.5, 0.5)),
-            ],
-            majorant: 2.0,
-        };
+        let m3 = m3();
         let segment = Segment {
             origin: Vec3::new(-0.4, 0.7, 0.0),
             dir: Vec3::new(0.6, 0.0, 0.8),
