@@ -45,8 +45,9 @@
 //! drawn it with density `p_b` (both per solid angle):
 //! - [`Heuristic::Balance`]: `p_a / (p_a + p_b)`;
 //! - [`Heuristic::Power`]: `p_a² / (p_a² + p_b²)`;
-//! - [`Heuristic::Bsdf`]: 1 for the BSDF sample, 0 for a light sample (skip its shadow
-//!   ray); [`Heuristic::Light`]: the other way round.
+//! - [`Heuristic::Bsdf`]: 1 for the BSDF sample, 0 for an area or environment light sample
+//!   (skip its shadow ray); [`Heuristic::Light`]: 1 for those light samples, 0 for a BSDF
+//!   sample that is not delta.
 //!
 //! A BSDF sample with `s.delta` (mirror, glass) and a point-light sample always have weight
 //! 1: the other strategy cannot produce them. If both densities are 0, the contribution is

@@ -34,9 +34,9 @@
 //! # Edge cases
 //! - Return finite, non-negative values; a NaN ruins the pixel (the renderer drops it).
 //! - `q` can be 0 (a black continuation): stop without dividing.
-//! - `bounce` is `None` whenever the BSDF absorbs the path: every light (it reflects
-//!   nothing) and surfaces whose sampling failed (a glossy lobe below the horizon). The
-//!   emission and direct light of that step still count.
+//! - `bounce` is `None` whenever the BSDF absorbs the path: an emitter without a material
+//!   (it reflects nothing) and surfaces whose sampling failed (a glossy lobe below the
+//!   horizon). The emission and direct light of that step still count.
 //! - Radiance and weights are colours: keep the three channels apart (a surface may reflect
 //!   one channel and not another).
 //! - The checks call you with every depth from −1 up, in closed boxes whose answer is

@@ -84,10 +84,11 @@ impl TestBrdf {
             }
             TestBrdf::IncidentOnly => Some(0.5 * cos),
             TestBrdf::ScaledIncidentOnly { scale } => Some(scale as f64 * 0.5 * cos),
+            // `(2/π) ∫_{cos θo < c} cos θo dω + (1/π) ∫_{cos θo > c} cos θo dω = 2c² + 1 − c²`.
+            TestBrdf::Lopsided => Some(1.0 + cos * cos),
             TestBrdf::CosinePower { .. }
             | TestBrdf::NanNearGrazing
             | TestBrdf::NanOneWayRound
-            | TestBrdf::Lopsided
             | TestBrdf::InfiniteNearGrazing => None,
         }
     }
@@ -143,6 +144,7 @@ mod tests {
             TestBrdf::CosinePower { k: 0.2, n: 2 },
             TestBrdf::CosinePower { k: 0.2, n: 4 },
             TestBrdf::IncidentOnly,
+            TestBrdf::Lopsided,
         ] {
             let mut s = Sampler::new(4, 0);
             let n = 200_000;

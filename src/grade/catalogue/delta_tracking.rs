@@ -183,8 +183,9 @@ const UNIT: Segment = Segment {
 };
 
 /// One flight along `segment`; 1 when `event` happened, else 0 (or the collision
-/// distance). A collision outside [0, t_max) or a bound that ran out is an error. (A
-/// collision exactly at 0 is what a uniform number of exactly 0 gives: allowed.)
+/// distance). A collision outside [0, t_max) is an error, and so is a bound that ran out
+/// when it was [`MAX_STEPS`]; a smaller bound may run out (no collision). (A collision
+/// exactly at 0 is what a uniform number of exactly 0 gives: allowed.)
 fn flight<'a, T: Tasks>(
     t: &'a T,
     medium: Slabs,

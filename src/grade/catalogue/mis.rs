@@ -11,7 +11,8 @@
 //! not `cos θ / π`, so code that assumes a Lambertian surface shows; the exact answer is a
 //! quadrature of the lobe over the square), and a coloured perfect mirror that reflects the
 //! square (a delta BSDF: no light sample, and its BSDF sample has weight 1 under every
-//! heuristic), and smooth glass in the mirror's place. Every estimate weighs the colour channels apart ([`CHANNEL_WEIGHTS`]).
+//! heuristic), and smooth glass in the mirror's place. Every estimate weighs the colour
+//! channels apart ([`CHANNEL_WEIGHTS`]).
 //!
 //! Beside the means, two variance comparisons: the same estimator in two units of length,
 //! and the balance heuristic against light sampling alone (weights that sum to one but are
@@ -19,7 +20,7 @@
 
 use super::phong_floor::PhongSurface;
 use super::polygon::projected_solid_angle;
-use super::{CHANNEL_WEIGHTS, EstimatorSpec, path_trace};
+use super::{CHANNEL_WEIGHTS, EstimatorSpec, path_trace, yaml_rgb};
 use crate::geometry::{Hit, Ray};
 use crate::grade::power::Declared;
 use crate::grade::variance_pair::{VarianceBound, VariancePair};
@@ -247,12 +248,11 @@ enum Floor {
 impl Floor {
     /// The floor's material in YAML.
     fn yaml(self) -> String {
-        let rgb = |c: DVec3| format!("[{}, {}, {}]", c.x, c.y, c.z);
         match self {
             Floor::Diffuse => format!("{{diffuse: {{albedo: {ALBEDO}}}}}"),
             Floor::Phong => PHONG.yaml(),
             Floor::BroadPhong => BROAD_PHONG.yaml(),
-            Floor::Mirror => format!("{{mirror: {{reflectance: {}}}}}", rgb(MIRROR)),
+            Floor::Mirror => format!("{{mirror: {{reflectance: {}}}}}", yaml_rgb(MIRROR)),
             Floor::Glass => format!("{{dielectric: {{ior: {GLASS_IOR}}}}}"),
         }
     }
@@ -413,6 +413,8 @@ fn scene_scale(scene: &Scene) -> f32 {
     scene.camera().eye.z / 3.0
 }
 
+/// The estimator of direct light on the Lambertian floor under `lighting`, lengths times
+/// `scale`, weighted by `heuristic`.
 fn spec<T: Tasks>(
     t: &T,
     lighting: Lighting,
@@ -422,6 +424,7 @@ fn spec<T: Tasks>(
     spec_on(t, Floor::Diffuse, lighting, scale, heuristic)
 }
 
+/// [`spec`] on the floor `floor`, seen from [`Floor::wo`].
 fn spec_on<T: Tasks>(
     t: &T,
     floor: Floor,
@@ -461,6 +464,9 @@ fn spec_on<T: Tasks>(
 
 pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
     use Lighting::*;
+    // The whole paths' scenes: a coloured furnace, and the Phong box along its normal.
+    let coloured = DVec3::new(0.8, 0.4, 0.0);
+    let phong_albedo = path_trace::PHONG.kd + path_trace::PHONG.ks;
     vec![
         spec(t, Open, 1.0, Heuristic::Power),
         spec(t, Open, 1.0, Heuristic::Balance),
@@ -500,16 +506,16 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         whole_path(
             t,
             "a furnace with ρ = (0.8, 0.4, 0), power weights: Le/(1 − ρ) per channel",
-            path_trace::furnace_around(DVec3::new(0.8, 0.4, 0.0), &render("mis, heuristic: power"), None),
+            path_trace::furnace_around(coloured, &render("mis, heuristic: power"), None),
             |s| uniform_sphere(s.next_2d()),
-            CHANNEL_WEIGHTS.dot(path_trace::EMISSION / DVec3::new(0.2, 0.6, 1.0)),
+            CHANNEL_WEIGHTS.dot(path_trace::EMISSION / (DVec3::ONE - coloured)),
         ),
         whole_path(
             t,
             "a phong floor under emitters that reflect nothing, balance weights: Le (kd + ks)",
             path_trace::phong_floor_box(&path_trace::PHONG, &render("mis, heuristic: balance")),
             |_| Vec3::NEG_Y,
-            CHANNEL_WEIGHTS.dot(path_trace::EMISSION * (path_trace::PHONG.kd + path_trace::PHONG.ks)),
+            CHANNEL_WEIGHTS.dot(path_trace::EMISSION * phong_albedo),
         ),
     ]
 }
@@ -521,9 +527,10 @@ fn render(strategy: &str) -> String {
     format!("{{spp: 1, max_depth: ~, rr_depth: 1, strategy: {strategy}, seed: 0}}")
 }
 
-/// A whole path from the origin in a direction drawn by `direction` by the reference's `path_trace`, which
-/// calls the `mis` under test at every bounce and continues along the bounce it returns:
-/// what `mis` returns beside its radiance (the bounce's weight, its traced segment and
+/// A whole path from the origin in a direction drawn by `direction`, by the `path_trace` a
+/// grade of `mis` runs beside it (the reference's, as `mis` is graded alone), which calls
+/// the `mis` under test at every bounce and continues along the bounce it returns: what
+/// `mis` returns beside its radiance (the bounce's weight, its traced segment and
 /// `emission_counted`) decides the rest of the path.
 fn whole_path<'a, T: Tasks>(
     t: &'a T,

@@ -376,6 +376,11 @@ fn conditioning(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
         })
 }
 
+/// A colour in the scene format, for the grader's own scenes.
+fn yaml_rgb(c: glam::DVec3) -> String {
+    format!("[{}, {}, {}]", c.x, c.y, c.z)
+}
+
 /// True when every number in `output` is exactly 0.
 fn is_zero(output: &Output) -> bool {
     match output {

@@ -12,7 +12,7 @@
 //! weights vary around and above 1.
 
 use super::phong_floor::PhongSurface;
-use super::{CHANNEL_WEIGHTS, EstimatorSpec};
+use super::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
 use crate::geometry::Ray;
 use crate::grade::power::Declared;
 use crate::integrator::Segment;
@@ -51,7 +51,7 @@ materials:
   wall: {{diffuse: {{albedo: {albedo}}}}}
 {object}shapes:
 {sphere}",
-        albedo = rgb(albedo),
+        albedo = yaml_rgb(albedo),
         object = inside.map_or(String::new(), |m| format!("  object: {m}\n")),
         sphere = if inside.is_some() {
             "  - sphere: {center: [0, 0, -0.5], radius: 0.4, material: object}\n"
@@ -75,11 +75,6 @@ const FURNACE_WALLS: [&str; 6] = [
     "[-1, -1, -1], edge1: [2, 0, 0], edge2: [0, 2, 0]",
     "[-1, -1, 1], edge1: [0, 2, 0], edge2: [2, 0, 0]",
 ];
-
-/// A YAML colour.
-fn rgb(c: DVec3) -> String {
-    format!("[{}, {}, {}]", c.x, c.y, c.z)
-}
 
 /// The Phong floor of [`phong_floor_box`] seen along its normal.
 pub(super) const PHONG: PhongSurface = PhongSurface {

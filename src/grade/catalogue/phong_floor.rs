@@ -5,9 +5,11 @@
 //! `kd + ks`; seen at a grazing angle with a low exponent, much of its lobe lies below the
 //! horizon, where its BSDF sampling fails.
 
-use super::polygon::{projected_hemisphere_integral, projected_integral};
+use super::polygon::{projected_hemisphere_integral, projected_integral, projected_solid_angle};
+use super::yaml_rgb;
 use glam::{DVec3, Vec3};
 use std::f64::consts::PI;
+use std::sync::{Mutex, PoisonError};
 
 /// The coefficients and exponent of a Phong surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,11 +25,10 @@ pub struct PhongSurface {
 impl PhongSurface {
     /// The material in the scene format.
     pub fn yaml(&self) -> String {
-        let rgb = |c: DVec3| format!("[{}, {}, {}]", c.x, c.y, c.z);
         format!(
             "{{phong: {{kd: {}, ks: {}, exponent: {}}}}}",
-            rgb(self.kd),
-            rgb(self.ks),
+            yaml_rgb(self.kd),
+            yaml_rgb(self.ks),
             self.exponent
         )
     }
@@ -43,16 +44,52 @@ impl PhongSurface {
     /// `∫_{H+} f(wo, wi) cos θi dωi`: the radiance reflected towards `wo` (local frame,
     /// above the surface) under unit radiance from every direction, per channel.
     pub fn albedo(&self, wo: DVec3) -> DVec3 {
-        self.kd + self.ks * projected_hemisphere_integral(|wi| self.lobe(wo, wi))
+        let lobe = memoised(self.key(wo, None), || {
+            projected_hemisphere_integral(|wi| self.lobe(wo, wi))
+        });
+        self.kd + self.ks * lobe
     }
 
     /// `∫_P f(wo, wi) cos θi dωi` over the parallelogram `corners` (local frame, seen from
     /// the origin): the radiance reflected towards `wo` from a light of unit radiance
     /// there, per channel.
     pub fn over(&self, wo: DVec3, corners: &[Vec3; 4]) -> DVec3 {
-        self.kd * (projected_integral(corners, |_| 1.0) / PI)
-            + self.ks * projected_integral(corners, |wi| self.lobe(wo, wi))
+        let lobe = memoised(self.key(wo, Some(corners)), || {
+            projected_integral(corners, |wi| self.lobe(wo, wi))
+        });
+        self.kd * (projected_solid_angle(corners) / PI) + self.ks * lobe
     }
+
+    /// What a quadrature of the lobe depends on, as bits: the exponent, `wo` and the
+    /// parallelogram, if any.
+    fn key(&self, wo: DVec3, corners: Option<&[Vec3; 4]>) -> Vec<u64> {
+        let mut key = vec![self.exponent.to_bits()];
+        key.extend(wo.to_array().map(f64::to_bits));
+        for corner in corners.into_iter().flatten() {
+            key.extend(corner.to_array().map(|x| u64::from(x.to_bits())));
+        }
+        key
+    }
+}
+
+/// The lobe quadratures this process has computed, by [`PhongSurface::key`]: the grader
+/// builds a task's estimators several times per grading (to count, run and judge them),
+/// and each quadrature takes up to half a million evaluations.
+fn memoised(key: Vec<u64>, quadrature: impl FnOnce() -> f64) -> f64 {
+    static DONE: Mutex<Vec<(Vec<u64>, f64)>> = Mutex::new(Vec::new());
+    let found = DONE
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .iter()
+        .find(|(k, _)| *k == key)
+        .map(|(_, v)| *v);
+    found.unwrap_or_else(|| {
+        let value = quadrature();
+        DONE.lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .push((key, value));
+        value
+    })
 }
 
 #[cfg(test)]

@@ -63,8 +63,8 @@ pub fn projected_integral(corners: &[Vec3; 4], g: impl Fn(DVec3) -> f64) -> f64 
 }
 
 /// `∫_{H+} g(ω) cos θ dω` over the upper hemisphere (local frame, z = normal) for a
-/// function `g` of the unit direction that is continuous with continuous derivatives up to
-/// the second: composite Simpson's rule in (θ, φ) on a 512 × 1024 grid, where
+/// function `g` of the unit direction that is continuous with a continuous first derivative
+/// (a lobe clipped at its edge): composite Simpson's rule in (θ, φ) on a 512 × 1024 grid, where
 /// `dω = sin θ dθ dφ` keeps the integrand smooth at the pole.
 pub fn projected_hemisphere_integral(g: impl Fn(DVec3) -> f64) -> f64 {
     const N: usize = 512;
@@ -79,13 +79,13 @@ pub fn projected_hemisphere_integral(g: impl Fn(DVec3) -> f64) -> f64 {
         std::f64::consts::FRAC_PI_2 / N as f64,
         std::f64::consts::TAU / M as f64,
     );
+    let azimuths: Vec<(f64, f64)> = (0..=M).map(|j| (j as f64 * h_phi).sin_cos()).collect();
     let mut sum = 0.0;
     for i in 0..=N {
         let theta = i as f64 * h_theta;
         let (sin, cos) = theta.sin_cos();
-        for j in 0..=M {
-            let phi = j as f64 * h_phi;
-            let w = DVec3::new(sin * phi.cos(), sin * phi.sin(), cos);
+        for (j, (sin_phi, cos_phi)) in azimuths.iter().enumerate() {
+            let w = DVec3::new(sin * cos_phi, sin * sin_phi, cos);
             sum += simpson(i, N) * simpson(j, M) * g(w) * cos * sin;
         }
     }
