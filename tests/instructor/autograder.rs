@@ -386,12 +386,14 @@ fn both_packages_grade_real_submissions_end_to_end() {
             _ => unreachable!(),
         }
     }
-    // PrairieLearn: the same built source (an image would hold exactly this), its entrypoint.
+    // PrairieLearn: the same built source (an image would hold exactly this), its entrypoint,
+    // with the two submissions whose scores are fractions (the conversion of a partial score,
+    // and a hostile file's output kept out of it).
     let pl = dir.path().join("pl");
     package("prairielearn", &pl);
     std::fs::remove_dir_all(pl.join("pbrlab")).unwrap();
     std::os::unix::fs::symlink(gs.join("pbrlab"), pl.join("pbrlab")).unwrap();
-    for name in NAMES {
+    for name in ["non_compiling", "hostile"] {
         let root = dir.path().join("grade").join(name);
         write_submission(
             &root.join("student"),
