@@ -40,7 +40,7 @@ pub mod scene;
 pub mod task_set;
 pub mod worksheet;
 
-/// What a task file needs in scope: vectors, the task trait, the parameter types.
+/// What a task file needs in scope: vectors, π, the task trait, the parameter types.
 pub mod prelude {
     pub use crate::bsdf::{Bsdf, BsdfSample, KajiyaKayParams, PhongParams, PlausibilityReport};
     pub use crate::geometry::{Hit, Ray};
@@ -52,4 +52,5 @@ pub mod prelude {
     pub use crate::scene::Scene;
     pub use crate::worksheet::Tasks;
     pub use glam::{Vec2, Vec3};
+    pub use std::f32::consts::PI;
 }
