@@ -36,9 +36,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let files = handout::write(root, &args.dir)?;
     if !args.without_reference {
         eprintln!(
-            "Compiling the reference into a shared library for mixed renders (a second \
-             compile of the framework, without the reference: minutes on two cores; cargo \
-             shows its progress)…"
+            "Compiling the reference into a shared library for mixed renders (on this \
+             repository's build of the framework; cargo shows its progress)…"
         );
         let library = handout::compiled_reference::build(root, &args.dir)?;
         eprintln!("Wrote {}", library.display());
