@@ -490,7 +490,8 @@ impl ClassRun<'_> {
         if let Some(report) = &result.report {
             crate::atomic_file::write(
                 &file.with_extension("txt"),
-                crate::grade::report::text(report).as_bytes(),
+                crate::grade::report::text(report, crate::grade::report::Detail::Verbose)
+                    .as_bytes(),
             )?;
             crate::grade::report::write_html(report, &file.with_extension(""))?;
         }

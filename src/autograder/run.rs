@@ -119,7 +119,7 @@ impl Submission<'_> {
         };
         let mut report = grade(&options, &launcher)?;
         report.seconds = start.elapsed().as_secs_f64();
-        println!("{}", report::text(&report));
+        println!("{}", report::text(&report, report::Detail::Verbose));
         Ok(Graded { intake, report })
     }
 

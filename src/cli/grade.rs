@@ -48,6 +48,11 @@ pub struct Args {
     /// Statistical checks are all or nothing under any policy.
     #[arg(long, default_value = "per-case")]
     pub credit: Credit,
+    /// Show every task and scene in the table and every line of what failed (by default the
+    /// table fits an 80×24 terminal: tasks not attempted and scenes waiting are a line
+    /// each, and each failure's detail is cut short).
+    #[arg(short, long)]
+    pub verbose: bool,
     /// Skip the render checks (they run when every task is graded).
     #[arg(long)]
     pub no_renders: bool,
@@ -108,7 +113,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             eprintln!("warning: could not remember this grade: {e:#}");
         }
     }
-    emit(&report::render(&report, args.format)?, args.output.as_ref())
+    let detail = if args.verbose {
+        report::Detail::Verbose
+    } else {
+        report::Detail::Compact
+    };
+    emit(
+        &report::render(&report, args.format, detail)?,
+        args.output.as_ref(),
+    )
 }
 
 fn emit(text: &str, output: Option<&PathBuf>) -> anyhow::Result<()> {

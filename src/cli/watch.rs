@@ -14,6 +14,9 @@ pub struct Args {
     /// How often to look for changes, in milliseconds.
     #[arg(long, default_value_t = 500)]
     pub poll_ms: u64,
+    /// Every row and every line of what failed (`grade --verbose`).
+    #[arg(short, long)]
+    pub verbose: bool,
 }
 
 /// Modification times of every file under `dir`.
@@ -39,10 +42,11 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
 /// (`rebuild::ensure_current`: cargo's progress and the compiler's messages shown as they
 /// come, a task that does not compile built from its stub); the grader's own table is the
 /// output, and watching goes on whatever happens.
-fn regrade(exe: &Path, tasks: &[String]) -> anyhow::Result<()> {
+fn regrade(exe: &Path, tasks: &[String], verbose: bool) -> anyhow::Result<()> {
     let status = Command::new(exe)
         .arg("grade")
         .args(tasks)
+        .args(verbose.then_some("--verbose"))
         .status()
         .with_context(|| format!("running {}", exe.display()))?;
     if !status.success() {
@@ -107,7 +111,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let keys = super::keys::Keys::start();
     let mut seen = snapshot(&exercises);
     let mut saved = None;
-    regrade(&exe, &args.tasks)?;
+    regrade(&exe, &args.tasks, args.verbose)?;
     prompt(&exercises, hint_task(saved, &args.tasks));
     loop {
         let key = keys.next(poll);
@@ -144,7 +148,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         print!("\x1b[2J\x1b[H");
         println!("{}: rebuilding and regrading…", exercises.display());
         std::io::Write::flush(&mut std::io::stdout())?;
-        regrade(&exe, &args.tasks)?;
+        regrade(&exe, &args.tasks, args.verbose)?;
         prompt(&exercises, hint_task(saved, &args.tasks));
     }
 }

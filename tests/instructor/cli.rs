@@ -277,3 +277,40 @@ fn hint_shows_one_new_level_per_call_and_remembers_it() {
         assert!(all.contains(&format!("hint {level}/{levels}")), "{all}");
     }
 }
+
+/// `pbrlab watch` in a pseudo-terminal, laid out for 80×24: the first screen (the table and
+/// the keys) has no line wider than 80 columns and, with the shipped stubs, at most 24
+/// lines, so nothing of it scrolls away.
+#[test]
+fn the_first_watch_screen_fits_an_80_by_24_terminal() {
+    let state = tempfile::tempdir().unwrap();
+    let mut command = Command::new(env!("CARGO_BIN_EXE_pbrlab"));
+    command
+        .args(["watch", "--poll-ms", "100"])
+        .env("PBRLAB_STATE_DIR", state.path());
+    let mut watch = rexpect::session::spawn_command(command, Some(120_000)).expect("a pty");
+    let keys = "q: quit";
+    let before = watch
+        .exp_string(keys)
+        .unwrap_or_else(|e| panic!("watch never printed `{keys}`: {e}"));
+    watch.send("q").unwrap();
+    watch.flush().unwrap();
+    watch.exp_eof().expect("q ends the watch");
+    let screen = format!("{before}{keys}");
+    let lines: Vec<&str> = screen
+        .trim_start_matches(['\r', '\n'])
+        .lines()
+        .map(|l| l.trim_end_matches('\r'))
+        .collect();
+    for line in &lines {
+        assert!(
+            line.chars().count() <= 80,
+            "a line of {} columns:\n{line}\n\nin\n{screen}",
+            line.chars().count()
+        );
+    }
+    if crate::shipped_stubs::untouched().len() == TaskId::ALL.len() {
+        assert!(lines.len() <= 24, "{} lines:\n{screen}", lines.len());
+        assert!(screen.contains("not attempted (15 tasks"), "{screen}");
+    }
+}

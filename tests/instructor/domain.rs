@@ -356,7 +356,7 @@ fn every_correct_alternative_passes_the_hidden_cases_of_200_seeds() {
 #[test]
 fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_report() {
     use crate::support::patch::Patch;
-    use pbrlab::grade::report::{gradescope, text, write_html};
+    use pbrlab::grade::report::{Detail, gradescope, text, write_html};
     use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
     let task = TaskId::SmithG1;
     let mut patch = Patch::new(task);
@@ -402,7 +402,14 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
     for (name, shown) in [
         ("HTML", html),
         ("Gradescope", results),
-        ("text", text(&report)),
+        // The terminal's table as a student sees it, its long lines wrapped.
+        (
+            "text",
+            text(&report, Detail::Compact)
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" "),
+        ),
     ] {
         assert!(
             shown.contains("simplest failing input: smith_g1(")

@@ -371,7 +371,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
             .filter(|t| t.max_points > 0.0 && !t.task.starts_with("scene: "))
             .all(|t| t.status == pbrlab::grade::verdict::TaskStatus::NotAttempted),
         "{}",
-        pbrlab::grade::report::text(&report)
+        pbrlab::grade::report::text(&report, pbrlab::grade::report::Detail::Verbose)
     );
     // Without the reference, reference grading is refused with a clear message.
     let refused = cargo(

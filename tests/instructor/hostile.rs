@@ -408,7 +408,7 @@ fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
         .collect();
     let visible = format!(
         "{}\n{}\n{:?}\n{}",
-        pbrlab::grade::report::text(&report),
+        pbrlab::grade::report::text(&report, pbrlab::grade::report::Detail::Verbose),
         g1.output,
         g1.status,
         shown.join("\n")

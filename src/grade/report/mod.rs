@@ -10,7 +10,7 @@ mod text;
 
 pub use gradescope::gradescope;
 pub use html::write_html;
-pub use text::{details, text};
+pub use text::{COMPACT_LINES, Detail, WIDTH, details, text};
 
 /// The output formats of `pbrlab grade --format`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
@@ -26,10 +26,14 @@ pub enum Format {
     Prairielearn,
 }
 
-/// `report` in `format`.
-pub fn render(report: &super::verdict::GradeReport, format: Format) -> anyhow::Result<String> {
+/// `report` in `format` (`detail` is how much the text table shows).
+pub fn render(
+    report: &super::verdict::GradeReport,
+    format: Format,
+    detail: Detail,
+) -> anyhow::Result<String> {
     Ok(match format {
-        Format::Text => text(report),
+        Format::Text => text(report, detail),
         Format::Json => serde_json::to_string_pretty(report)?,
         Format::Gradescope => serde_json::to_string_pretty(&gradescope(report))?,
         Format::Prairielearn => {

@@ -37,6 +37,27 @@ fn status_cell(t: &TaskOutcome) -> String {
     }
 }
 
+/// The width of the terminal the table is laid out for: every line of a [`Detail::Compact`]
+/// text fits it.
+pub const WIDTH: usize = 80;
+
+/// The most lines of detail [`Detail::Compact`] shows for one task (`--verbose` shows all).
+pub const COMPACT_LINES: usize = 12;
+
+/// How much of a report [`text`] shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Detail {
+    /// What fits an 80×24 terminal: a row per task that has a grade, one line for the tasks
+    /// not attempted yet and one for the scenes that wait for tasks, then at most
+    /// [`COMPACT_LINES`] lines of detail per task that did not pass, every line at most
+    /// [`WIDTH`] characters.
+    #[default]
+    Compact,
+    /// A row per task and scene, every line of detail, and the protections of the workers'
+    /// sandbox even when all were in force.
+    Verbose,
+}
+
 /// One row of the table: at most 76 characters, so it fits an 80-column terminal.
 fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time: &str) {
     let _ = writeln!(
@@ -50,15 +71,64 @@ fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time
     );
 }
 
+/// `line` as it is when it fits [`WIDTH`] (a compiler's message keeps its alignment), else
+/// broken at spaces into lines of at most that width (a longer word is cut), each
+/// continuation indented like `line` and two more.
+fn wrap(line: &str) -> Vec<String> {
+    if line.chars().count() <= WIDTH {
+        return vec![line.to_string()];
+    }
+    let indent = line.len() - line.trim_start().len();
+    let mut lines = Vec::new();
+    let mut current = " ".repeat(indent);
+    let mut empty = true;
+    for word in line.split_whitespace() {
+        if !empty && current.chars().count() + 1 + word.chars().count() > WIDTH {
+            lines.push(std::mem::replace(&mut current, " ".repeat(indent + 2)));
+            empty = true;
+        }
+        if !empty {
+            current.push(' ');
+        }
+        current.push_str(word);
+        empty = false;
+    }
+    lines.push(current);
+    lines.into_iter().map(|l| fit(&l, WIDTH)).collect()
+}
+
+/// `label (N nouns, P points): a, b, c`, wrapped to [`WIDTH`].
+fn folded(s: &mut String, label: &str, noun: &str, names: &[&str], points: f64, after: &str) {
+    if names.is_empty() {
+        return;
+    }
+    let line = format!(
+        "{label} ({} {noun}{}, {} points): {}{after}",
+        names.len(),
+        if names.len() == 1 { "" } else { "s" },
+        format_points(points),
+        names.join(", ")
+    );
+    for l in wrap(&line) {
+        let _ = writeln!(s, "{l}");
+    }
+}
+
 /// The table: task, status, points, worst error, time (one row per task and scene, 76
-/// columns); the total; then what failed, per task, and one line for the scenes that wait
-/// for tasks to pass.
-pub fn text(report: &GradeReport) -> String {
+/// columns); the total; then what failed, per task. [`Detail::Compact`] folds the tasks not
+/// attempted and the scenes that wait for tasks into a line each and keeps what follows
+/// short (see [`Detail`]).
+pub fn text(report: &GradeReport, detail: Detail) -> String {
+    let verbose = detail == Detail::Verbose;
+    let waits = |t: &TaskOutcome| {
+        t.task.starts_with("scene: ") && matches!(t.status, TaskStatus::NeedsTask { .. })
+    };
+    let folds = |t: &TaskOutcome| !verbose && (t.status == TaskStatus::NotAttempted || waits(t));
     let mut s = String::new();
     row(&mut s, "task", "status", "points", "worst error", "time");
     let rule = "-".repeat(76);
     let _ = writeln!(s, "{rule}");
-    for t in &report.tasks {
+    for t in report.tasks.iter().filter(|t| !folds(t)) {
         let points = if t.max_points > 0.0 {
             format!(
                 "{}/{}",
@@ -71,6 +141,28 @@ pub fn text(report: &GradeReport) -> String {
         let time = format!("{:.2}s", t.seconds);
         row(&mut s, &t.task, &status_cell(t), &points, &worst(t), &time);
     }
+    if !verbose {
+        let group = |keep: &dyn Fn(&TaskOutcome) -> bool| {
+            let chosen: Vec<&TaskOutcome> = report.tasks.iter().filter(|t| keep(t)).collect();
+            let points = chosen.iter().map(|t| t.max_points).sum::<f64>();
+            let names: Vec<&str> = chosen
+                .iter()
+                .map(|t| t.task.strip_prefix("scene: ").unwrap_or(&t.task))
+                .collect();
+            (names, points)
+        };
+        let (names, points) = group(&|t| t.status == TaskStatus::NotAttempted);
+        folded(&mut s, "not attempted", "task", &names, points, "");
+        let (names, points) = group(&waits);
+        folded(
+            &mut s,
+            "waiting for their tasks",
+            "scene",
+            &names,
+            points,
+            " (`pbrlab needs SCENE` names them)",
+        );
+    }
     let _ = writeln!(s, "{rule}");
     let total = format!(
         "{}/{}",
@@ -79,8 +171,13 @@ pub fn text(report: &GradeReport) -> String {
     );
     let time = format!("{:.2}s", report.seconds);
     row(&mut s, "total", &report.implementation, &total, "", &time);
+    // The compact table names the protections only when one of them was not in force.
     for protections in &report.sandbox {
-        let _ = writeln!(s, "sandbox of the workers: {protections}");
+        if verbose || protections.split("; ").any(|p| !p.ends_with(" in force")) {
+            for line in wrap(&format!("sandbox of the workers: {protections}")) {
+                let _ = writeln!(s, "{line}");
+            }
+        }
     }
     let mut waiting = Vec::new();
     for t in &report.tasks {
@@ -91,11 +188,27 @@ pub fn text(report: &GradeReport) -> String {
             continue;
         }
         let details = details(t);
-        if !details.is_empty() {
-            let _ = write!(s, "\n{}: {}\n{details}", t.task, t.status.label());
+        if details.is_empty() {
+            continue;
+        }
+        let _ = write!(s, "\n{}: {}\n", t.task, t.status.label());
+        if verbose {
+            s += &details;
+            continue;
+        }
+        let lines: Vec<String> = details.lines().flat_map(wrap).collect();
+        for line in lines.iter().take(COMPACT_LINES) {
+            let _ = writeln!(s, "{line}");
+        }
+        if lines.len() > COMPACT_LINES {
+            let _ = writeln!(
+                s,
+                "  … and {} more lines (grade with --verbose to see them)",
+                lines.len() - COMPACT_LINES
+            );
         }
     }
-    if !waiting.is_empty() {
+    if verbose && !waiting.is_empty() {
         let _ = writeln!(
             s,
             "\nScenes are graded once the tasks they call pass: {}.",
@@ -209,6 +322,98 @@ mod tests {
             output: String::new(),
             seconds: 0.0,
         }
+    }
+
+    /// A report in which every task of the worksheet failed with `lines` messages (one of
+    /// them 205 characters long) after printing five lines, and two scenes wait.
+    fn all_failing(lines: usize) -> GradeReport {
+        let mut tasks: Vec<TaskOutcome> = crate::worksheet::TaskId::ALL
+            .iter()
+            .map(|task| {
+                let mut check = CheckResult::new("values", CheckKind::Values);
+                check.total = lines;
+                check.fail(format!("{} long", "word ".repeat(40)));
+                for case in 1..lines {
+                    check.fail(format!("case {case} is off"));
+                }
+                check.finish();
+                TaskOutcome {
+                    task: task.name().into(),
+                    status: TaskStatus::Failed,
+                    points: 0.0,
+                    max_points: 5.0,
+                    checks: vec![check],
+                    output: (1..=5).map(|i| format!("printed {i}\n")).collect(),
+                    seconds: 0.0,
+                }
+            })
+            .collect();
+        for scene in ["cornell", "smoke"] {
+            tasks.push(TaskOutcome {
+                task: format!("scene: {scene}"),
+                status: TaskStatus::NeedsTask {
+                    task: "path_trace, mis".into(),
+                },
+                points: 0.0,
+                max_points: 4.0,
+                checks: Vec::new(),
+                output: String::new(),
+                seconds: 0.0,
+            });
+        }
+        GradeReport::new("student", 1, false, tasks, 1.0)
+    }
+
+    #[test]
+    fn the_compact_text_fits_80_columns_and_cuts_each_failure_short() {
+        let report = all_failing(40);
+        let compact = text(&report, Detail::Compact);
+        for line in compact.lines() {
+            assert!(line.chars().count() <= WIDTH, "{line}");
+        }
+        assert!(
+            compact.contains("waiting for their tasks (2 scenes, 8 points): cornell, smoke"),
+            "{compact}"
+        );
+        assert!(!compact.contains("scene: cornell"), "{compact}");
+        // Per task: its heading, at most COMPACT_LINES lines, and the line that says more.
+        let smith: Vec<&str> = compact
+            .split("\nsmith_g1: FAILED\n")
+            .nth(1)
+            .expect("smith_g1's details")
+            .split("\n\n")
+            .next()
+            .unwrap()
+            .lines()
+            .collect();
+        assert_eq!(smith.len(), COMPACT_LINES + 1, "{smith:#?}");
+        assert!(smith[COMPACT_LINES].contains("more lines"), "{smith:#?}");
+        // Verbose has every row and every line, uncut.
+        let verbose = text(&report, Detail::Verbose);
+        assert!(verbose.contains("scene: cornell"), "{verbose}");
+        assert!(verbose.contains("printed 5"), "{verbose}");
+        assert!(
+            verbose.contains(&format!("{} long", "word ".repeat(40))),
+            "{verbose}"
+        );
+    }
+
+    #[test]
+    fn a_long_line_wraps_at_spaces_and_a_short_one_keeps_its_alignment() {
+        let short = "   |     ^^^^ expected `f32`";
+        assert_eq!(wrap(short), vec![short.to_string()]);
+        let long = format!("  {}", "word ".repeat(30));
+        let wrapped = wrap(&long);
+        assert!(wrapped.len() >= 2, "{wrapped:#?}");
+        assert!(wrapped.iter().all(|l| l.chars().count() <= WIDTH));
+        assert!(wrapped[1].starts_with("    word"), "{wrapped:#?}");
+        assert_eq!(
+            wrapped
+                .iter()
+                .map(|l| l.split_whitespace().count())
+                .sum::<usize>(),
+            30
+        );
     }
 
     #[test]
