@@ -1,11 +1,13 @@
 //! The implementations of [`Tasks`](crate::worksheet::Tasks) a binary links: the student's
-//! (`exercises/`) and, in the instructor build, the reference (`solutions/`), each a
-//! [`TaskFns`] table exported by its own crate.
+//! (`exercises/`, linked only by the `pbrlab-worker` binary) and, in the instructor build,
+//! the reference (`solutions/`), each a [`TaskFns`] table exported by its own crate.
 //!
 //! The framework never names those crates: a binary [`install`]s their tables once at start,
 //! and framework code reaches them through [`student`], [`reference()`] and [`mixed`]. So the
 //! student's crate cannot reach the reference through the framework, and an exercise edit
-//! recompiles only the exercise crate and the binary's link.
+//! recompiles only the exercise crate and the worker's link. The `pbrlab` binary links no
+//! student code at all: its [`student`] table is [`TaskFns::ABSENT`], and its commands that
+//! run student code hand it to the worker binary (`crate::cli::student_side`).
 
 use crate::grade::isolation::Launcher;
 use crate::task_set::TaskSet;
@@ -16,8 +18,8 @@ use std::time::Duration;
 /// The task tables a binary links.
 #[derive(Clone, Copy, Debug)]
 pub struct Implementations {
-    /// The student's code (`exercises/`).
-    pub student: TaskFns,
+    /// The student's code (`exercises/`), in the one binary that links it (`pbrlab-worker`).
+    pub student: Option<TaskFns>,
     /// The reference (`solutions/`), absent in the student handout.
     pub reference: Option<TaskFns>,
 }
@@ -38,9 +40,16 @@ fn installed() -> &'static Implementations {
     )
 }
 
-/// The student's code: every task function from `exercises/`.
+/// The student's code: every task function from `exercises/`; in a process that does not
+/// link it, the table whose every function panics ([`TaskFns::ABSENT`]), which is enough for
+/// the grader's bookkeeping (which estimators a task has) and runs no student code.
 pub fn student() -> &'static TaskFns {
-    &installed().student
+    installed().student.as_ref().unwrap_or(&TaskFns::ABSENT)
+}
+
+/// True in the process that links the student's code (the `pbrlab-worker` binary).
+pub fn links_student() -> bool {
+    installed().student.is_some()
 }
 
 /// The reference solution, when this build has it (the handout does not).

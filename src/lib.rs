@@ -15,6 +15,8 @@
 //!   against run time.
 //! - [`autograder`]: packages for Gradescope and PrairieLearn, and a whole class at once.
 //! - [`handout`]: the student repository without the solutions.
+//! - [`cli`]: the command line, one file per subcommand, run by the `pbrlab` binary (and,
+//!   for a render or study of student code, by the worker binary).
 //!
 //! `src/ARCHITECTURE.md` maps the flows, the crates and every file a task touches.
 //!
@@ -23,10 +25,11 @@
 //! reference another (`solutions/`, `pbrlab-solutions`); each depends on `pbrlab-renderer`
 //! only and exports a
 //! [`TaskFns`](worksheet::TaskFns) table built by [`task_table!`]. The root package
-//! (`pbrlab-cli`) links both into the `pbrlab` binary and
-//! [`install`](implementation::install)s them. The framework is compiled once, for
-//! `TaskFns`, never for a student's type, so an exercise edit recompiles the exercise crate
-//! and a link.
+//! (`pbrlab-cli`) links the reference into the `pbrlab` binary, and the worker package
+//! (`src/worker/`) the student's crate into `pbrlab-worker`, the only binary that links it;
+//! each [`install`](implementation::install)s its tables. The framework is compiled once,
+//! for `TaskFns`, never for a student's type, so an exercise edit recompiles the exercise
+//! crate and the worker's link, and a compile error in it never stops `pbrlab` itself.
 //!
 //! Decision, measured on two cores (same session): the student's code is linked
 //! statically and called through function pointers, not loaded at run time. A one-line
@@ -46,7 +49,7 @@
 //! [`grade::sandbox`] first: the grader's workers (probes included) and `render`/`converge`
 //! of student code.
 //!
-//! The workers are a binary of their own, `pbrlab-worker` (`src/worker_main.rs`): it links
+//! The workers are a binary of their own, `pbrlab-worker` (`src/worker/main.rs`): it links
 //! the task tables and the renderer but never calls the grader's judging code, so the linker
 //! drops the embedded expected data and reference renders from it (a test searches the file
 //! for every stored file's bytes). A worker gets inputs (calls, sampler setups, seeds, a
@@ -60,6 +63,7 @@
 //! [`task_table!`]: crate::task_table
 
 pub mod autograder;
+pub mod cli;
 pub mod converge;
 pub mod entropy;
 pub mod grade;

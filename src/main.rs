@@ -1,19 +1,11 @@
-//! The `pbrlab` binary: see `pbrlab --help`. It links the student's crate (`exercises/`)
-//! and, in the instructor build, the reference's (`solutions/`), and hands their task
-//! tables to the framework.
+//! The `pbrlab` binary: see `pbrlab --help`. The commands are the framework's
+//! (`pbrlab::cli`); this binary hands them the reference's task table (in the instructor
+//! build the crate in `solutions/`, in the handout the compiled reference when it fits) and
+//! links no student code: the commands that run it start the worker binary, `pbrlab-worker`.
 
-mod cli;
 mod linked_tables;
-
-use clap::Parser;
 
 fn main() -> std::process::ExitCode {
     linked_tables::install_linked();
-    match cli::run(cli::Cli::parse()) {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            std::process::ExitCode::FAILURE
-        }
-    }
+    pbrlab::cli::main()
 }

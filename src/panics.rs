@@ -59,10 +59,23 @@ static QUIET: AtomicUsize = AtomicUsize::new(0);
 /// The first student panic silenced by a [`QuietPanics`] guard and not yet taken.
 static FIRST_QUIET: Mutex<Option<Panic>> = Mutex::new(None);
 
+/// The name of `file` when it is an exercise file: in `exercises/`, or in the copy a build
+/// compiles when another exercise file does not (`.pbrlab/stubbed/`,
+/// [`crate::grade::student_build`]).
+fn exercise_file_name(file: &str) -> Option<String> {
+    let file = file.replace('\\', "/");
+    let (folder, name) = file.rsplit_once('/')?;
+    let mut up = folder.rsplit('/');
+    match (up.next(), up.next()) {
+        (Some("exercises"), _) | (Some("stubbed"), Some(".pbrlab")) => Some(name.into()),
+        _ => None,
+    }
+}
+
 /// The task whose stub raised a `todo!()` at `file`, if the file is an exercise.
 fn exercise_task(file: &str) -> Option<String> {
-    let file = file.replace('\\', "/");
-    let name = file.rsplit_once("exercises/")?.1.strip_suffix(".rs")?;
+    let file = exercise_file_name(file)?;
+    let name = file.strip_suffix(".rs")?;
     TaskId::parse(name)
         .ok()
         .filter(|t| t.name() == name)
@@ -87,13 +100,13 @@ impl Panic {
     }
 }
 
-/// True for a panic raised by student code: a `todo!()` anywhere, or any panic in a file
-/// under `exercises/`.
+/// True for a panic raised by student code: a `todo!()` anywhere, or any panic in an
+/// exercise file.
 fn from_student(info: &PanicHookInfo<'_>) -> bool {
     crate::implementation::is_todo_panic(info.payload())
         || info
             .location()
-            .is_some_and(|l| l.file().replace('\\', "/").contains("exercises/"))
+            .is_some_and(|l| exercise_file_name(l.file()).is_some())
 }
 
 fn install() {
@@ -195,6 +208,13 @@ mod tests {
             Some("smith_g1")
         );
         assert_eq!(exercise_task("/x/exercises/smith.rs"), None);
+        assert_eq!(
+            exercise_task("/x/.pbrlab/stubbed/mis.rs").as_deref(),
+            Some("mis"),
+            "the copy built when another file does not compile"
+        );
+        assert_eq!(exercise_task("/x/exercises/sub/mis.rs"), None);
+        assert_eq!(exercise_task("/x/my_exercises/mis.rs"), None);
         assert_eq!(exercise_task("solutions/smith_g1.rs"), None);
     }
 

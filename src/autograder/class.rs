@@ -359,7 +359,6 @@ impl ClassRun<'_> {
         StudentBuild {
             root: self.root,
             exercises: &exercises,
-            bins: &[WORKER_BINARY],
             handout: !cfg!(feature = "solutions"),
             stub,
             echo: self.progress,
@@ -406,7 +405,6 @@ impl ClassRun<'_> {
             let record = StudentBuild {
                 root: self.root,
                 exercises: &exercises,
-                bins: &[WORKER_BINARY],
                 handout: !cfg!(feature = "solutions"),
                 stub,
                 echo: false,

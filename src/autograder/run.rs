@@ -8,7 +8,7 @@
 use super::config::Config;
 use super::schema::{Service, validate};
 use super::submission::{self, Intake};
-use crate::grade::isolation::{Launcher, WORKER_BINARY};
+use crate::grade::isolation::Launcher;
 use crate::grade::report::{self, gradescope, prairielearn};
 use crate::grade::runner::{GradeOptions, grade};
 use crate::grade::student_build::StudentBuild;
@@ -90,7 +90,6 @@ impl Submission<'_> {
         let record = StudentBuild {
             root: self.root,
             exercises: &exercises,
-            bins: &[WORKER_BINARY],
             handout: !cfg!(feature = "solutions"),
             stub: &stub,
             echo: false,

@@ -1,11 +1,11 @@
 //! `pbrlab autograder`: write a Gradescope or PrairieLearn package, and (inside one) grade a
 //! submission.
 
+use crate::autograder::config::Config;
+use crate::autograder::package;
+use crate::autograder::run::Submission;
+use crate::autograder::schema::Service;
 use anyhow::Context;
-use pbrlab::autograder::config::Config;
-use pbrlab::autograder::package;
-use pbrlab::autograder::run::Submission;
-use pbrlab::autograder::schema::Service;
 use std::path::PathBuf;
 
 /// Arguments of `pbrlab autograder`.
@@ -57,7 +57,7 @@ pub struct RunArgs {
 
 /// Runs `pbrlab autograder`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let root = pbrlab::repository_root();
+    let root = crate::repository_root();
     match args.command {
         Step::Gradescope(p) => write(root, p, Service::Gradescope),
         Step::Prairielearn(p) => write(root, p, Service::Prairielearn),
@@ -66,12 +66,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 Ok(config) => config,
                 Err(e) => {
                     // Still a results file.
-                    let json = pbrlab::autograder::run::failed(
+                    let json = crate::autograder::run::failed(
                         r.service,
                         &format!("{e:#}"),
                         std::time::Instant::now(),
                     );
-                    pbrlab::atomic_file::write(&r.results, json.as_bytes())?;
+                    crate::atomic_file::write(&r.results, json.as_bytes())?;
                     return Err(e);
                 }
             };

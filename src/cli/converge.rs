@@ -1,17 +1,17 @@
 //! `pbrlab converge`: error against run time for every strategy a study supports.
 
+use crate::converge::builtin::{BUILTIN, builtin};
+use crate::converge::csv::write_csv;
+use crate::converge::plot::plot_error_vs_time;
+use crate::converge::scene_study::{ReferenceSource, scene_study};
+use crate::converge::study::FLOOR_MARGIN;
+use crate::converge::{Strategy, Study, StudyConfig, Summary, run_study_reporting, summarise};
+use crate::implementation::ImplChoice;
+use crate::scene::{LoadOptions, Scene};
+use crate::stability::value::format_number;
+use crate::worksheet::Tasks;
 use anyhow::{Context, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
-use pbrlab::converge::builtin::{BUILTIN, builtin};
-use pbrlab::converge::csv::write_csv;
-use pbrlab::converge::plot::plot_error_vs_time;
-use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
-use pbrlab::converge::study::FLOOR_MARGIN;
-use pbrlab::converge::{Strategy, Study, StudyConfig, Summary, run_study_reporting, summarise};
-use pbrlab::implementation::ImplChoice;
-use pbrlab::scene::{LoadOptions, Scene};
-use pbrlab::stability::value::format_number;
-use pbrlab::worksheet::Tasks;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pbrlab converge`.
@@ -86,7 +86,7 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
     if let Some(file) = &args.reference {
         return scene_study::<T, T>(path, tasks, &base, ReferenceSource::File(file), &args.out);
     }
-    if let Some(reference) = pbrlab::implementation::try_reference() {
+    if let Some(reference) = crate::implementation::try_reference() {
         let source = ReferenceSource::Render {
             tasks: *reference,
             label: "reference",
@@ -97,7 +97,7 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
     eprintln!(
         "warning: {}: the reference is rendered with your own code, so a bias in it cannot \
          show (pass --reference FILE.exr)",
-        pbrlab::implementation::no_reference()
+        crate::implementation::no_reference()
     );
     let source = ReferenceSource::Render {
         tasks: tasks.clone(),
@@ -109,6 +109,9 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
 
 /// Runs the study, writes the CSV and the plot, and prints the slope table.
 pub fn run(args: Args) -> anyhow::Result<()> {
+    if args.implementation != ImplChoice::Reference && !crate::implementation::links_student() {
+        return super::student_side::delegate();
+    }
     match args.implementation {
         ImplChoice::Student => {
             let path = Path::new(&args.scene);
@@ -119,20 +122,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 super::render::require_student_tasks(&scene, path)?;
             }
             sandbox(&args)?;
-            run_with(*pbrlab::implementation::student(), &args)
+            run_with(*crate::implementation::student(), &args)
         }
         ImplChoice::Reference | ImplChoice::Mixed => {
-            let Some(reference) = pbrlab::implementation::try_reference() else {
+            let Some(reference) = crate::implementation::try_reference() else {
                 bail!(
                     "{}; use --impl student",
-                    pbrlab::implementation::no_reference()
+                    crate::implementation::no_reference()
                 )
             };
             if args.implementation == ImplChoice::Reference {
                 return run_with(*reference, &args);
             }
-            let imp = pbrlab::implementation::mixed(pbrlab::implementation::student_written(
-                &pbrlab::grade::isolation::Launcher::current_exe()?,
+            let imp = crate::implementation::mixed(crate::implementation::student_written(
+                &crate::grade::isolation::Launcher::current_exe()?,
             ));
             sandbox(&args)?;
             run_with(imp, &args)
@@ -143,21 +146,21 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 /// Enters the sandbox before a study runs student code: the scene's folder, the scenes and a
 /// given reference image readable, the output folder writable, no processes, no network.
 fn sandbox(args: &Args) -> anyhow::Result<()> {
-    use pbrlab::grade::sandbox::{Policy, enter};
+    use crate::grade::sandbox::{Policy, enter};
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     let folder = |p: &Path| match p.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    let mut readable = vec![pbrlab::repository_root().join("scenes")];
+    let mut readable = vec![crate::repository_root().join("scenes")];
     let scene = Path::new(&args.scene);
     if scene.is_file() {
         readable.push(folder(scene));
     }
     readable.extend(args.reference.as_deref().map(folder));
     // The plot's font is read now: the sandbox closes the system's font folders.
-    let _ = pbrlab::converge::plot::ensure_font();
+    let _ = crate::converge::plot::ensure_font();
     let protections = enter(&Policy {
         memory_limit: 0,
         cpu_seconds: 0,
@@ -322,8 +325,8 @@ fn print_table(summaries: &[Summary]) {
 /// The relMSE of every strategy at the same wall time (the longest time every strategy
 /// reached), read off its measured points on log-log axes: which strategy is better for a
 /// given budget, which differs from which is better per sample.
-fn print_equal_time(points: &[pbrlab::converge::Point]) {
-    let Some((time, table)) = pbrlab::converge::study::equal_time(points) else {
+fn print_equal_time(points: &[crate::converge::Point]) {
+    let Some((time, table)) = crate::converge::study::equal_time(points) else {
         return;
     };
     println!("\nat equal time ({} s per estimate):", format_number(time));

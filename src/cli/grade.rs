@@ -1,13 +1,13 @@
+use crate::grade::calibration;
+use crate::grade::credit::Credit;
+use crate::grade::history;
+use crate::grade::isolation::Launcher;
+use crate::grade::report::{self, Format};
+use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
+use crate::grade::student_build::BuildRecord;
+use crate::implementation::ImplChoice;
+use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
-use pbrlab::grade::calibration;
-use pbrlab::grade::credit::Credit;
-use pbrlab::grade::history;
-use pbrlab::grade::isolation::Launcher;
-use pbrlab::grade::report::{self, Format};
-use pbrlab::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
-use pbrlab::grade::student_build::BuildRecord;
-use pbrlab::implementation::ImplChoice;
-use pbrlab::worksheet::TaskId;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -126,7 +126,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 fn emit(text: &str, output: Option<&PathBuf>) -> anyhow::Result<()> {
     match output {
-        Some(path) => pbrlab::atomic_file::write(path, text.as_bytes())
+        Some(path) => crate::atomic_file::write(path, text.as_bytes())
             .with_context(|| format!("writing {}", path.display())),
         None => {
             print!("{text}");

@@ -1,7 +1,7 @@
 //! `pbrlab grade-class`: grade every submission in a folder.
 
-use pbrlab::autograder::class::ClassRun;
-use pbrlab::grade::credit::Credit;
+use crate::autograder::class::ClassRun;
+use crate::grade::credit::Credit;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -48,7 +48,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(2, |n| n.get()));
     let seconds = ClassRun {
-        root: pbrlab::repository_root(),
+        root: crate::repository_root(),
         submissions: &args.submissions,
         out: &args.out,
         hidden_seed: args.hidden_seed,

@@ -1,7 +1,6 @@
+use crate::handout;
+use crate::worksheet::task_functions;
 use anyhow::bail;
-use pbrlab::handout;
-use pbrlab::implementation::student_attempted;
-use pbrlab::worksheet::task_functions;
 use std::path::PathBuf;
 
 /// Arguments of `pbrlab handout`.
@@ -21,18 +20,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         bail!("this is already a handout: run `pbrlab handout` from the instructor repository");
     }
     // The exercises are copied as they are: they must still be the stubs.
-    let written: Vec<_> = student_attempted(&pbrlab::grade::isolation::Launcher::current_exe()?)
+    let root = crate::repository_root();
+    let written: Vec<_> = handout::stubs::edited(root)
         .iter()
         .filter(|t| !task_functions(*t).is_empty())
         .map(|t| format!("exercises/{t}.rs"))
         .collect();
     if !written.is_empty() {
         bail!(
-            "these exercises are implemented and would be handed out as they are: {}",
+            "these exercises differ from the committed stubs and would be handed out as they are: {}",
             written.join(", ")
         );
     }
-    let root = pbrlab::repository_root();
     let files = handout::write(root, &args.dir)?;
     if !args.without_reference {
         eprintln!(

@@ -1,6 +1,6 @@
+use crate::grade::history::state_dir;
+use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
-use pbrlab::grade::history::state_dir;
-use pbrlab::worksheet::TaskId;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
@@ -34,7 +34,8 @@ fn load_seen() -> BTreeMap<String, usize> {
 /// next call goes one level further: one step at a time, as the hints are written.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
-    show(task, &args, &format!("`pbrlab hint {}` again", task.name()))
+    let again = format!("`{} hint {}` again", super::invocation(), task.name());
+    show(task, &args, &again)
 }
 
 /// [`run`] for `task`; `again` says how to ask for the next level (the command, or a key
@@ -69,7 +70,8 @@ pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
             n => format!("levels 1–{n}"),
         };
         println!(
-            "\n({earlier} shown before: `pbrlab hint {} --level {}` shows them again)",
+            "\n({earlier} shown before: `{} hint {} --level {}` shows them again)",
+            super::invocation(),
             info.id,
             first - 1
         );
@@ -82,7 +84,7 @@ pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
     if last > before {
         seen.insert(info.id.to_string(), last);
         let path = seen_path();
-        pbrlab::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
+        crate::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
             .with_context(|| format!("remembering the hints shown in {}", path.display()))?;
     }
     Ok(())

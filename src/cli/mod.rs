@@ -1,4 +1,7 @@
-//! The `pbrlab` command line: one file per subcommand.
+//! The `pbrlab` command line: one file per subcommand. The `pbrlab` binary runs it with the
+//! reference's table and no student code; the commands that run student code (a render or
+//! a convergence study of it) run in the worker binary instead ([`student_side`]), and the
+//! grader's commands send it jobs ([`crate::grade::isolation`]).
 
 mod autograder;
 mod converge;
@@ -9,10 +12,11 @@ mod hint;
 mod keys;
 mod needs;
 mod power;
-mod rebuild;
-pub mod render;
+pub mod rebuild;
+mod render;
 mod reset;
 mod stability;
+pub mod student_side;
 mod tasks;
 mod watch;
 
@@ -62,23 +66,64 @@ pub enum Command {
     Power(power::Args),
 }
 
+/// The environment variable in which `pbrlab` passes [`invocation`] to a command the worker
+/// runs for it.
+const INVOCATION: &str = "PBRLAB_INVOCATION";
+
+/// How the user started pbrlab, for messages that name another command (`{} hint TASK`):
+/// `cargo run --release --` when cargo started it, the bare name when it was found on
+/// `PATH`, otherwise the path as typed (`./target/release/pbrlab`).
+pub fn invocation() -> String {
+    if let Ok(passed) = std::env::var(INVOCATION) {
+        return passed;
+    }
+    let exe = std::env::current_exe().unwrap_or_default();
+    // `cargo run` (and `cargo test`) set the package's variables for the program it runs;
+    // the root package, whose binary this is, is `pbrlab-cli`.
+    if std::env::var_os("CARGO").is_some()
+        && std::env::var("CARGO_PKG_NAME").as_deref() == Ok("pbrlab-cli")
+    {
+        let profile = if exe.components().any(|c| c.as_os_str() == "debug") {
+            ""
+        } else {
+            " --release"
+        };
+        return format!("cargo run{profile} --");
+    }
+    match std::env::args().next() {
+        Some(typed) if typed.contains(std::path::MAIN_SEPARATOR) => typed,
+        _ => "pbrlab".into(),
+    }
+}
+
+/// Parses the command line and runs it; an error is printed with its causes. The `main` of
+/// the `pbrlab` binary, after it installs the reference's table.
+pub fn main() -> std::process::ExitCode {
+    finish(run(Cli::parse()))
+}
+
+/// The exit code of a command's result, printing the error (and its causes) of a failure.
+/// A command the worker ran has printed its own.
+pub fn finish(result: anyhow::Result<()>) -> std::process::ExitCode {
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => match e.downcast_ref::<student_side::WorkerExit>() {
+            Some(exit) => exit.code(),
+            None => {
+                eprintln!("error: {e:#}");
+                std::process::ExitCode::FAILURE
+            }
+        },
+    }
+}
+
 /// Runs the command line.
 pub fn run(cli: Cli) -> anyhow::Result<()> {
-    // Commands that run the student's code run the code as it is now (the default, a
-    // render, renders the student's code in the handout).
-    if matches!(
-        cli.command,
-        None | Some(
-            Command::Tasks(_)
-                | Command::Grade(_)
-                | Command::Handout(_)
-                | Command::Render(_)
-                | Command::Needs(_)
-                | Command::Stability(_)
-                | Command::Converge(_)
-        )
-    ) {
-        rebuild::ensure_current()?;
+    // The grader's commands run every job in the worker binary, which must hold the
+    // student's code as it is now. (A render or a study of student code hands itself to
+    // the worker, rebuilding it first: `student_side`.)
+    if matches!(cli.command, Some(Command::Grade(_) | Command::Stability(_))) {
+        rebuild::ensure_worker()?;
     }
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),

@@ -1,7 +1,5 @@
+use crate::scene::{LoadOptions, Scene};
 use anyhow::{Result, anyhow};
-use pbrlab::grade::isolation::Launcher;
-use pbrlab::implementation::student_attempted;
-use pbrlab::scene::{LoadOptions, Scene};
 use std::path::PathBuf;
 
 /// Arguments of `pbrlab needs`.
@@ -22,12 +20,12 @@ pub fn run(args: Args) -> Result<()> {
     println!("{}", args.scene.display());
     println!("{needs}");
     println!("your code:");
-    let attempted = student_attempted(&Launcher::current_exe()?);
+    let attempted = crate::handout::stubs::edited(crate::repository_root());
     for task in needs.all_tasks().iter() {
         let status = if attempted.contains(task) {
-            "implemented"
+            "edited"
         } else {
-            "not attempted"
+            "still the stub"
         };
         println!("  {:<16} {status}", task.name());
     }

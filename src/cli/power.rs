@@ -1,9 +1,9 @@
-//! `pbrlab power`: the power table of the statistical checks (see [`pbrlab::grade::power`]),
+//! `pbrlab power`: the power table of the statistical checks (see [`crate::grade::power`]),
 //! measured on the reference.
 
+use crate::grade::power::{PowerRow, render_power, table, task_power};
+use crate::worksheet::TaskId;
 use anyhow::{anyhow, bail};
-use pbrlab::grade::power::{PowerRow, render_power, table, task_power};
-use pbrlab::worksheet::TaskId;
 
 /// Arguments of `pbrlab power`.
 #[derive(clap::Args, Debug)]
@@ -23,8 +23,8 @@ pub struct Args {
 
 /// Measures and prints the power table.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let Some(reference) = pbrlab::implementation::try_reference() else {
-        bail!("{}", pbrlab::implementation::no_reference())
+    let Some(reference) = crate::implementation::try_reference() else {
+        bail!("{}", crate::implementation::no_reference())
     };
     if args.seeds == 0 {
         bail!("--seeds must be at least 1");

@@ -1,27 +1,23 @@
-//! A binary older than the exercise files it links would grade, render or probe code the
-//! student has since changed. Before such a command runs, the binary compares the newest
-//! `exercises/*.rs` with its own file and the worker binary's (`pbrlab-worker`, which runs
-//! the code for the grader) and, when an exercise is newer or the worker is missing,
-//! rebuilds both with cargo
-//! (only the student's crate and the link: about a second), compiler messages shown as
-//! cargo prints them, and runs the command again in the new binary. An exercise file that
-//! does not compile is built from its shipped stub ([`pbrlab::grade::student_build`]): the
-//! other tasks still grade and render, and the grade reports the compiler's message on it.
+//! Keeping the worker binary current. The `pbrlab` binary links no student code: all of it
+//! runs in `pbrlab-worker` (package `src/worker/`), which links the student's crate. Before
+//! a command that runs student code, this compares the worker with the newest
+//! `exercises/*.rs` and with the running binary (a newer framework), and when the worker is
+//! older, missing, or built from another folder (a class run's submission), rebuilds it with
+//! cargo: the student's crate and a link, seconds, with cargo's progress and the compiler's
+//! messages as cargo prints them. An exercise file that does not compile is built from its
+//! shipped stub ([`crate::grade::student_build`]): the other tasks still grade and render,
+//! and the grade reports the compiler's message on it. Commands that run no student code
+//! (`tasks`, `needs`, `hint`, a render of the reference) never build anything, and a compile
+//! error in an exercise file never stops `pbrlab` itself from starting.
 
+use crate::grade::isolation::worker_beside;
+use crate::grade::student_build::{BuildRecord, StudentBuild};
 use anyhow::Context;
-use pbrlab::grade::isolation::{WORKER_BINARY, worker_beside};
-use pbrlab::grade::student_build::{BuildRecord, StudentBuild};
-use std::path::Path;
-use std::process::Command;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
-/// How long a rebuild may take (the framework is built already: the student's crate and a
-/// link take seconds).
-const BUILD_DEADLINE: Duration = Duration::from_secs(600);
-
-/// Set in the environment of the re-run, so a rebuild that does not refresh the binary
-/// cannot loop.
-const REBUILT: &str = "PBRLAB_REBUILT";
+/// How long a rebuild may take (a first build compiles the framework's worker side too).
+const BUILD_DEADLINE: Duration = Duration::from_secs(1800);
 
 /// The newest modification time of a `.rs` file in `dir`.
 fn newest_source(dir: &Path) -> Option<SystemTime> {
@@ -33,39 +29,43 @@ fn newest_source(dir: &Path) -> Option<SystemTime> {
         .max()
 }
 
-/// Rebuilds and re-runs this command when an exercise file is newer than this binary;
-/// returns normally when the binary is current (or has just been rebuilt).
-pub fn ensure_current() -> anyhow::Result<()> {
-    if std::env::var_os(REBUILT).is_some() {
-        return Ok(());
-    }
-    let root = pbrlab::repository_root();
-    let Some(source) = newest_source(&root.join("exercises")) else {
-        return Ok(());
-    };
+/// The worker binary beside the running one, rebuilt first when it is older than an
+/// exercise file or than the running binary, missing, or built from another folder.
+pub fn ensure_worker() -> anyhow::Result<PathBuf> {
     let exe = std::env::current_exe().context("locating this binary")?;
-    // The worker binary runs the student's code: it must be current too (`cargo run`
-    // builds only this one).
-    let worker = worker_beside(&exe);
-    let built = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified());
+    ensure_worker_beside(&exe)
+}
+
+/// [`ensure_worker`] for the worker beside the binary `exe` (a test names the `pbrlab` it
+/// runs).
+pub fn ensure_worker_beside(exe: &Path) -> anyhow::Result<PathBuf> {
+    let root = crate::repository_root();
+    let exercises = root.join("exercises");
+    let worker = worker_beside(exe);
+    let modified = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified()).ok();
     // A build from another folder (`grade-class` builds each submission here) is not the
     // student's.
-    let elsewhere = BuildRecord::of(&worker).is_some_and(|r| {
-        r.exercises.canonicalize().ok() != root.join("exercises").canonicalize().ok()
-    });
-    if !elsewhere
-        && [&exe, &worker]
-            .iter()
-            .all(|file| built(file).is_ok_and(|b| b >= source))
-    {
-        return Ok(());
+    let elsewhere = BuildRecord::of(&worker)
+        .is_some_and(|r| r.exercises.canonicalize().ok() != exercises.canonicalize().ok());
+    let newest = [newest_source(&exercises), modified(exe)]
+        .into_iter()
+        .flatten()
+        .max();
+    let current = match (modified(&worker), newest) {
+        (Some(built), Some(newest)) => built >= newest,
+        (built, _) => built.is_some(),
+    };
+    if current && !elsewhere {
+        return Ok(worker);
     }
-    eprintln!("rebuilding: exercises/ is newer than the binaries (or pbrlab-worker is missing)");
-    let stub = |task| pbrlab::handout::stubs::shipped(root, task);
-    StudentBuild {
+    eprintln!(
+        "pbrlab: building the worker that runs your code (pbrlab-worker: exercises/ is newer, \
+         or it is missing)"
+    );
+    let stub = |task| crate::handout::stubs::shipped(root, task);
+    let record = StudentBuild {
         root,
-        exercises: &root.join("exercises"),
-        bins: &["pbrlab", WORKER_BINARY],
+        exercises: &exercises,
         handout: !cfg!(feature = "solutions"),
         stub: &stub,
         echo: true,
@@ -75,28 +75,16 @@ pub fn ensure_current() -> anyhow::Result<()> {
     }
     .run()
     .context("fix the error above and run the command again")?;
-    let err = exec_again(&exe);
-    Err(err).context(format!("running the rebuilt {}", exe.display()))
+    anyhow::ensure!(
+        same_file(&record.worker, &worker),
+        "cargo built the worker at {}, not beside this binary ({}): run pbrlab from the \
+         target folder cargo builds into",
+        record.worker.display(),
+        worker.display()
+    );
+    Ok(worker)
 }
 
-/// Replaces this process with `exe` and the same arguments.
-#[cfg(unix)]
-fn exec_again(exe: &Path) -> std::io::Error {
-    use std::os::unix::process::CommandExt;
-    Command::new(exe)
-        .args(std::env::args_os().skip(1))
-        .env(REBUILT, "1")
-        .exec()
-}
-
-#[cfg(not(unix))]
-fn exec_again(exe: &Path) -> std::io::Error {
-    match Command::new(exe)
-        .args(std::env::args_os().skip(1))
-        .env(REBUILT, "1")
-        .status()
-    {
-        Ok(status) => std::process::exit(status.code().unwrap_or(1)),
-        Err(e) => e,
-    }
+fn same_file(a: &Path, b: &Path) -> bool {
+    a.canonicalize().ok() == b.canonicalize().ok()
 }

@@ -1,13 +1,13 @@
+use crate::grade::isolation::Launcher;
+use crate::grade::sandbox::{self, Policy, Protections};
+use crate::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, probe_student, student};
+use crate::panics::QuietPanics;
+use crate::render::checkpoint::{self, Origin};
+use crate::render::{self, RenderOptions, RenderOutput, RenderState, output, raycast};
+use crate::scene::schema::Strategy;
+use crate::scene::{LoadOptions, Scene};
+use crate::worksheet::Tasks;
 use anyhow::{Context, Result, anyhow, bail};
-use pbrlab::grade::isolation::Launcher;
-use pbrlab::grade::sandbox::{self, Policy, Protections};
-use pbrlab::implementation::{Attempt, ImplChoice, PROBE_TIMEOUT, probe_student, student};
-use pbrlab::panics::QuietPanics;
-use pbrlab::render::checkpoint::{self, Origin};
-use pbrlab::render::{self, RenderOptions, RenderOutput, RenderState, output, raycast};
-use pbrlab::scene::schema::Strategy;
-use pbrlab::scene::{LoadOptions, Scene};
-use pbrlab::worksheet::Tasks;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
@@ -90,7 +90,7 @@ fn scene_path(given: Option<&Path>) -> PathBuf {
             if local.is_file() {
                 local
             } else {
-                pbrlab::repository_root().join(DEFAULT_SCENE)
+                crate::repository_root().join(DEFAULT_SCENE)
             }
         }
     }
@@ -115,12 +115,19 @@ pub fn require_student_tasks(scene: &Scene, path: &Path) -> Result<()> {
         })
         .collect();
     if !unusable.is_empty() {
-        let what_to_do = if pbrlab::implementation::try_reference().is_some() {
-            "Use `--impl reference` for the reference alone, or `--impl mixed` to take the \
+        // (The worker that runs this for `pbrlab` loads the reference only for a mix.)
+        let what_to_do =
+            if cfg!(feature = "solutions") || crate::implementation::try_reference().is_some() {
+                "Use `--impl reference` for the reference alone, or `--impl mixed` to take the \
              reference for those tasks only."
-        } else {
-            "Write those first: `pbrlab tasks` shows what is left, `pbrlab hint TASK` helps."
-        };
+                    .to_string()
+            } else {
+                let pbrlab = super::invocation();
+                format!(
+                    "Write those first: `{pbrlab} tasks` shows what is left, `{pbrlab} hint TASK` \
+                 helps."
+                )
+            };
         bail!(
             "{} needs tasks your code cannot run yet:\n  {}\n{what_to_do}",
             path.display(),
@@ -163,9 +170,6 @@ pub fn run(args: Args) -> Result<()> {
         ..Default::default()
     };
     let scene = Scene::load(&path, &options).map_err(|e| anyhow!("{e}"))?;
-    for w in scene.warnings() {
-        eprintln!("warning: {w}");
-    }
     let choice = args
         .implementation
         .unwrap_or(if cfg!(feature = "solutions") {
@@ -173,16 +177,24 @@ pub fn run(args: Args) -> Result<()> {
         } else {
             ImplChoice::Student
         });
+    // Student code runs in the worker binary: the scene is checked here first, so that a
+    // mistake in it is reported before any build.
+    if choice != ImplChoice::Reference && !crate::implementation::links_student() {
+        return super::student_side::delegate();
+    }
+    for w in scene.warnings() {
+        eprintln!("warning: {w}");
+    }
     let output_path = args.output.clone().unwrap_or_else(|| {
         let stem = path
             .file_stem()
             .map_or("render".into(), |s| s.to_string_lossy().into_owned());
         PathBuf::from("renders").join(format!("{stem}.exr"))
     });
-    if choice != ImplChoice::Student && pbrlab::implementation::try_reference().is_none() {
+    if choice != ImplChoice::Student && crate::implementation::try_reference().is_none() {
         bail!(
             "{}: use `--impl student`",
-            pbrlab::implementation::no_reference()
+            crate::implementation::no_reference()
         )
     }
     // What renders: the student's code, the reference, or the reference with the tasks the
@@ -192,15 +204,15 @@ pub fn run(args: Args) -> Result<()> {
             require_student_tasks(&scene, &path)?;
             *student()
         }
-        ImplChoice::Reference => *pbrlab::implementation::reference(),
+        ImplChoice::Reference => *crate::implementation::reference(),
         ImplChoice::Mixed => {
-            let mine = pbrlab::implementation::student_written(&Launcher::current_exe()?);
+            let mine = crate::implementation::student_written(&Launcher::current_exe()?);
             let used: Vec<&str> = scene
                 .needs()
                 .all_tasks()
                 .iter()
                 .filter(|t| mine.contains(*t))
-                .map(pbrlab::worksheet::TaskId::name)
+                .map(crate::worksheet::TaskId::name)
                 .collect();
             eprintln!(
                 "your code renders: {}",
@@ -210,7 +222,7 @@ pub fn run(args: Args) -> Result<()> {
                     used.join(", ")
                 }
             );
-            pbrlab::implementation::mixed(mine)
+            crate::implementation::mixed(mine)
         }
     };
     // What a checkpoint must match to be continued, and the state it holds (read now:
@@ -222,7 +234,7 @@ pub fn run(args: Args) -> Result<()> {
         settings: format!(
             "{:?}",
             // The seed is compared on its own; the target spp may grow.
-            pbrlab::scene::RenderSettings {
+            crate::scene::RenderSettings {
                 spp: 0,
                 seed: 0,
                 ..*scene.settings()
@@ -390,7 +402,7 @@ fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
             Some(p) => p.describe(),
             None => format!(
                 "panicked: {}",
-                pbrlab::implementation::panic_message(payload.as_ref()).unwrap_or("(no message)")
+                crate::implementation::panic_message(payload.as_ref()).unwrap_or("(no message)")
             ),
         };
         anyhow!(

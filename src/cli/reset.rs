@@ -1,6 +1,6 @@
+use crate::handout::stubs;
+use crate::worksheet::TaskId;
 use anyhow::anyhow;
-use pbrlab::handout::stubs;
-use pbrlab::worksheet::TaskId;
 
 /// Arguments of `pbrlab reset`.
 #[derive(clap::Args, Debug)]
@@ -12,8 +12,8 @@ pub struct Args {
 /// Puts the shipped stub of a task back, keeping the student's version in `.pbrlab/reset/`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
-    let keep = pbrlab::grade::history::state_dir().join("reset");
-    match stubs::reset(pbrlab::repository_root(), task, &keep)? {
+    let keep = crate::grade::history::state_dir().join("reset");
+    match stubs::reset(crate::repository_root(), task, &keep)? {
         None => println!("exercises/{task}.rs is already the shipped stub."),
         Some(kept) => println!(
             "exercises/{task}.rs is the shipped stub again; your version is in {}",

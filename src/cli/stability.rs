@@ -1,11 +1,11 @@
 //! `pbrlab stability`: every task on stiff and extreme inputs, as a table or JSON.
 
+use crate::grade::isolation::Launcher;
+use crate::grade::worker::ImplSpec;
+use crate::implementation::ImplChoice;
+use crate::stability::{Outcome, Verdict, run_isolated};
+use crate::worksheet::TaskId;
 use anyhow::{anyhow, bail};
-use pbrlab::grade::isolation::Launcher;
-use pbrlab::grade::worker::ImplSpec;
-use pbrlab::implementation::ImplChoice;
-use pbrlab::stability::{Outcome, Verdict, run_isolated};
-use pbrlab::worksheet::TaskId;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::time::Duration;
@@ -32,7 +32,7 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "text")]
     pub format: Format,
     /// Time limit per case in seconds; a case that takes longer is reported as a hang.
-    #[arg(long, default_value_t = pbrlab::stability::DEFAULT_TIMEOUT.as_secs_f64())]
+    #[arg(long, default_value_t = crate::stability::DEFAULT_TIMEOUT.as_secs_f64())]
     pub timeout: f64,
 }
 
@@ -58,7 +58,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         ImplChoice::Reference => (ImplSpec::Reference, "reference", Vec::new()),
         #[cfg(feature = "solutions")]
         ImplChoice::Mixed => {
-            let student = pbrlab::implementation::student_attempted(&launcher);
+            let student = crate::implementation::student_attempted(&launcher);
             let reference: Vec<TaskId> = tasks
                 .iter()
                 .copied()

@@ -1,19 +1,17 @@
-use pbrlab::grade::history::{self, Graded, Progress};
-use pbrlab::grade::isolation::Launcher;
-use pbrlab::grade::renders::RENDER_CHECKS;
-use pbrlab::grade::runner::scene_entry;
-use pbrlab::grade::verdict::TaskStatus;
-use pbrlab::implementation::student_attempted;
-use pbrlab::task_set::TaskSet;
-use pbrlab::worksheet::{TaskId, task_functions};
+use crate::grade::history::{self, Graded, Progress};
+use crate::grade::renders::RENDER_CHECKS;
+use crate::grade::runner::scene_entry;
+use crate::grade::verdict::TaskStatus;
+use crate::task_set::TaskSet;
+use crate::worksheet::{TaskId, task_functions};
 
 /// Arguments of `pbrlab tasks`.
 #[derive(clap::Args, Debug, Default)]
 pub struct Args {}
 
 /// The status column of a task: its latest grade when there is one (saying when the file
-/// was edited since), otherwise whether the stub is replaced (`attempted`, probed in
-/// workers).
+/// was edited since), otherwise whether the file is still the shipped stub (`attempted`:
+/// edited, told from the files without running them).
 fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> String {
     match progress.get(task.name()) {
         Some(graded) if graded.outcome.max_points > 0.0 => {
@@ -34,14 +32,14 @@ fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> String {
             graded.outcome.status.label()
         }
         _ if task_functions(task).is_empty() => "arrives with the renderer".into(),
-        _ if attempted.contains(task) => "implemented, not graded yet".into(),
+        _ if attempted.contains(task) => "edited, not graded yet".into(),
         _ => "not attempted".into(),
     }
 }
 
 /// True when `exercises/<task>.rs` is newer than the task's grade.
 fn changed_since(task: TaskId, graded: &Graded) -> bool {
-    let file = pbrlab::repository_root()
+    let file = crate::repository_root()
         .join("exercises")
         .join(format!("{}.rs", task.name()));
     std::fs::metadata(file)
@@ -64,7 +62,7 @@ fn scene_status(scene: &str, progress: &Progress) -> String {
 /// one's latest `pbrlab grade`, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
     let progress = history::load_progress();
-    let attempted = student_attempted(&Launcher::current_exe()?);
+    let attempted = crate::handout::stubs::edited(crate::repository_root());
     println!("{:<16} {:<62} {:>6}  status", "task", "title", "points");
     let mut total = 0.0;
     for task in TaskId::ALL {
@@ -95,11 +93,13 @@ pub fn run(_args: Args) -> anyhow::Result<()> {
         .map(|g| g.outcome.points)
         .sum();
     if progress.is_empty() {
-        println!("\nNot graded yet: run `pbrlab grade` (or `pbrlab watch`).");
+        let pbrlab = super::invocation();
+        println!("\nNot graded yet: run `{pbrlab} grade` (or `{pbrlab} watch`).");
     } else {
         println!(
-            "\nLatest grades: {scored:.1}/{total} ({}). Run `pbrlab grade` again after changing your code.",
-            history::progress_path().display()
+            "\nLatest grades: {scored:.1}/{total} ({}). Run `{} grade` again after changing your code.",
+            history::progress_path().display(),
+            super::invocation()
         );
     }
     Ok(())

@@ -1,6 +1,6 @@
+use crate::grade::verdict::TaskStatus;
+use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
-use pbrlab::grade::verdict::TaskStatus;
-use pbrlab::worksheet::TaskId;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -38,8 +38,8 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
     times
 }
 
-/// Regrades in a new process of this binary, whose first step rebuilds the student's crate
-/// (`rebuild::ensure_current`: cargo's progress and the compiler's messages shown as they
+/// Regrades in a new process of this binary, whose first step rebuilds the worker with the
+/// student's crate (`rebuild::ensure_worker`: cargo's progress and the compiler's messages shown as they
 /// come, a task that does not compile built from its stub); the grader's own table is the
 /// output, and watching goes on whatever happens.
 fn regrade(exe: &Path, tasks: &[String], verbose: bool) -> anyhow::Result<()> {
@@ -62,7 +62,7 @@ fn hint_task(saved: Option<TaskId>, named: &[String]) -> TaskId {
     saved
         .or_else(|| named.iter().find_map(|n| TaskId::parse(n).ok()))
         .or_else(|| {
-            let progress = pbrlab::grade::history::load_progress();
+            let progress = crate::grade::history::load_progress();
             TaskId::ALL.into_iter().find(|t| {
                 progress
                     .get(t.name())
@@ -99,7 +99,7 @@ fn prompt(exercises: &Path, hint_for: TaskId) {
 /// Regrades every time a file in `exercises/` is saved; h shows the next hint, r regrades,
 /// q (or Ctrl-C) stops.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let root = pbrlab::repository_root();
+    let root = crate::repository_root();
     let exercises = root.join("exercises");
     if !exercises.is_dir() {
         bail!("no exercises/ directory in {}", root.display());

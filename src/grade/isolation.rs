@@ -16,7 +16,7 @@ use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-/// The name of the binary that runs student code for the grader (`src/worker_main.rs`).
+/// The name of the binary that runs student code for the grader (`src/worker/main.rs`).
 pub const WORKER_BINARY: &str = "pbrlab-worker";
 
 /// The worker binary built beside the binary `exe`.
@@ -222,6 +222,12 @@ pub fn run(launcher: &Launcher, job: &Job, timeout: Duration) -> WorkerRun {
 /// One line of a worker's stdout, as text (invalid UTF-8 replaced), at most
 /// [`LINE_LIMIT`] bytes of it; `None` at the end of the stream.
 pub(crate) fn read_line(reader: &mut impl BufRead) -> Option<String> {
+    read_until(reader, |b| b == b'\n')
+}
+
+/// [`read_line`] ending at every byte for which `end` holds (a `\r` too, for a progress
+/// line redrawn in place).
+pub(crate) fn read_until(reader: &mut impl BufRead, end: impl Fn(u8) -> bool) -> Option<String> {
     let mut line = Vec::new();
     let mut any = false;
     loop {
@@ -234,7 +240,7 @@ pub(crate) fn read_line(reader: &mut impl BufRead) -> Option<String> {
             break;
         }
         any = true;
-        let (chunk, done) = match buffer.iter().position(|&b| b == b'\n') {
+        let (chunk, done) = match buffer.iter().position(|&b| end(b)) {
             Some(i) => (&buffer[..i], Some(i + 1)),
             None => (buffer, None),
         };

@@ -65,8 +65,6 @@ pub struct StudentBuild<'a> {
     pub root: &'a Path,
     /// The folder of the exercise files to compile (`exercises/`, or a submission's copy).
     pub exercises: &'a Path,
-    /// The binaries to build (`pbrlab-worker`, and `pbrlab` for a local rebuild).
-    pub bins: &'a [&'a str],
     /// Build without the reference (the student handout).
     pub handout: bool,
     /// The shipped stub of a task.
@@ -110,6 +108,18 @@ pub const BOUNDS: Bounds = Bounds {
 /// kernel's views of the process (cargo counts CPUs there).
 const SYSTEM_FOLDERS: &[&str] = &[
     "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/etc", "/proc", "/sys", "/dev",
+];
+
+/// What cargo builds: the worker binary of its package (`src/worker/`), with the root
+/// package selected too so that features resolve as in the `pbrlab` binary's own build and
+/// both link one compilation of the framework.
+pub const WORKER_SELECTION: &[&str] = &[
+    "-p",
+    "pbrlab-cli",
+    "-p",
+    "pbrlab-worker",
+    "--bin",
+    super::isolation::WORKER_BINARY,
 ];
 
 /// The most compiler output kept from one build, in bytes (beyond [`MAX_MESSAGE`] per task).
@@ -271,11 +281,9 @@ impl StudentBuild<'_> {
         cargo
             .current_dir(self.root)
             .args(["build", "--release", "--message-format=json"])
+            .args(WORKER_SELECTION)
             .stdout(Stdio::piped())
             .stderr(Stdio::piped());
-        for bin in self.bins {
-            cargo.args(["--bin", bin]);
-        }
         // A build without the reference in the instructor's repository (whose default
         // features include it) must say so. The handout has no default features to turn
         // off.
@@ -315,6 +323,16 @@ impl StudentBuild<'_> {
         } else {
             cargo.env("PBRLAB_EXERCISES", compiled);
         }
+        // On a terminal, cargo's count of units built (its own progress line, which it
+        // draws only on a terminal, asked for here and read back) drives a bar with the
+        // time left: a first build compiles the framework for minutes.
+        let bar =
+            (self.echo && std::io::IsTerminal::is_terminal(&std::io::stderr())).then(build_bar);
+        if bar.is_some() {
+            cargo
+                .env("CARGO_TERM_PROGRESS_WHEN", "always")
+                .env("CARGO_TERM_PROGRESS_WIDTH", "100");
+        }
         let mut child = cargo
             .spawn()
             .context("running cargo to build the exercises (is it on PATH?)")?;
@@ -324,14 +342,29 @@ impl StudentBuild<'_> {
             let mut lines = Vec::new();
             let mut kept = 0;
             let mut reader = BufReader::new(stderr);
-            while let Some(line) = super::isolation::read_line(&mut reader) {
-                if echo {
+            // Cargo redraws its progress line after `\r`.
+            let end = |b: u8| b == b'\n' || (bar.is_some() && b == b'\r');
+            while let Some(line) = super::isolation::read_until(&mut reader, end) {
+                if let Some(bar) = &bar {
+                    if let Some((done, total)) = cargo_progress(&line) {
+                        bar.set_length(total);
+                        bar.set_position(done);
+                        continue;
+                    }
+                    if line.trim().is_empty() {
+                        continue;
+                    }
+                    bar.println(&line);
+                } else if echo {
                     eprintln!("{line}");
                 }
                 if kept + line.len() <= MAX_OUTPUT {
                     kept += line.len();
                     lines.push(line);
                 }
+            }
+            if let Some(bar) = bar {
+                bar.finish_and_clear();
             }
             lines
         });
@@ -422,6 +455,28 @@ fn kill_group(group: u32) {
     {
         let _ = rustix::process::kill_process_group(pid, rustix::process::Signal::KILL);
     }
+}
+
+/// The bar of a build shown on a terminal.
+fn build_bar() -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(0);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "building {bar:30} {pos}/{len} crates, {elapsed} (ETA {eta})",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    bar
+}
+
+/// The units built and the units in all from cargo's progress line
+/// (`    Building [=====>     ] 57/220: serde, syn`).
+fn cargo_progress(line: &str) -> Option<(u64, u64)> {
+    let rest = line.trim_start().strip_prefix("Building [")?;
+    let (_, counts) = rest.split_once("] ")?;
+    let (done, rest) = counts.split_once('/')?;
+    let total = rest.split(|c: char| !c.is_ascii_digit()).next()?;
+    Some((done.parse().ok()?, total.parse().ok()?))
 }
 
 fn same_folder(a: &Path, b: &Path) -> bool {
@@ -529,6 +584,21 @@ mod tests {
     use super::*;
 
     #[test]
+    fn cargo_progress_lines_give_the_units_built_and_in_all() {
+        let drawn = "    Building [====>                    ] 57/220: serde, syn(build.rs)     ";
+        assert_eq!(cargo_progress(drawn), Some((57, 220)));
+        assert_eq!(cargo_progress("    Building [ ] 0/5: anyhow"), Some((0, 5)));
+        for other in [
+            "   Compiling syn v2.0.1",
+            "error: Building [x] failed",
+            "    Building [==>  ] a/b: x",
+            "",
+        ] {
+            assert_eq!(cargo_progress(other), None, "{other:?}");
+        }
+    }
+
+    #[test]
     fn the_compiled_copy_has_the_stub_in_place_of_each_failing_file() {
         let dir = tempfile::tempdir().unwrap();
         let exercises = dir.path().join("exercises");
@@ -539,7 +609,6 @@ mod tests {
         let build = StudentBuild {
             root: dir.path(),
             exercises: &exercises,
-            bins: &[],
             handout: false,
             stub: &stub,
             echo: false,

@@ -274,8 +274,21 @@ pub fn production_impl(
     spec: &ImplSpec,
     references: &BTreeMap<String, PathBuf>,
 ) -> anyhow::Result<crate::worksheet::TaskFns> {
+    with_references(*crate::implementation::student(), spec, references)
+}
+
+/// `table` with each task that `spec` does not take from the student replaced by the
+/// reference from its library in `references`: [`production_impl`] on the student's table,
+/// and the whole reference (every task from its library) on [`TaskFns::ABSENT`] for a
+/// render or study of student code that needs it beside.
+///
+/// [`TaskFns::ABSENT`]: crate::worksheet::TaskFns::ABSENT
+pub fn with_references(
+    mut table: crate::worksheet::TaskFns,
+    spec: &ImplSpec,
+    references: &BTreeMap<String, PathBuf>,
+) -> anyhow::Result<crate::worksheet::TaskFns> {
     let student = spec.student_tasks();
-    let mut table = *crate::implementation::student();
     // Each library once, though the handout's one library holds every task.
     let mut loaded: BTreeMap<&PathBuf, crate::worksheet::TaskFns> = BTreeMap::new();
     for task in TaskId::ALL.into_iter().filter(|t| !student.contains(*t)) {

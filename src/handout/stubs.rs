@@ -3,6 +3,7 @@
 //! [`TAG`], is the handout as written; in the instructor repository, which has no such tag,
 //! the committed exercises are the stubs.
 
+use crate::task_set::TaskSet;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
@@ -76,6 +77,17 @@ pub fn unchanged(root: &Path, task: TaskId) -> Option<bool> {
     let stub = shipped(root, task).ok()?;
     let current = std::fs::read_to_string(exercise_file(root, task)).ok()?;
     Some(current == stub)
+}
+
+/// The tasks whose `exercises/<task>.rs` in the repository at `root` is no longer the
+/// shipped stub (or cannot be compared with it): what the student has started, told from
+/// the files alone, so that a command that shows it runs no student code and builds
+/// nothing.
+pub fn edited(root: &Path) -> TaskSet {
+    TaskId::ALL
+        .into_iter()
+        .filter(|&task| unchanged(root, task) != Some(true))
+        .collect()
 }
 
 /// Puts the shipped stub of `task` back in `root`'s `exercises/`, after copying the

@@ -258,7 +258,7 @@ fn hint_shows_one_new_level_per_call_and_remembers_it() {
     assert!(first.contains(&format!("hint 1/{levels}")), "{first}");
     assert!(!first.contains(&format!("hint 2/{levels}")), "{first}");
     assert!(
-        first.contains("`pbrlab hint fresnel_schlick` again shows hint 2"),
+        first.contains(" hint fresnel_schlick` again shows hint 2"),
         "{first}"
     );
     let second = hint(&[]);

@@ -62,7 +62,7 @@ fn stored_expected_data_is_the_references() {
 /// test process, as the `pbrlab` binary does at start.
 fn install() {
     pbrlab::implementation::install(pbrlab::implementation::Implementations {
-        student: pbrlab_exercises::TASKS,
+        student: Some(pbrlab_exercises::TASKS),
         reference: Some(pbrlab_solutions::TASKS),
     });
 }

@@ -407,6 +407,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         "{grade}"
     );
     watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(&dir);
+    one_broken_file_still_grades_through_cargo_run(&dir);
     // A student's own work never makes the README's test command fail: the tests about
     // the stubs check the files that are still stubs.
     for task in ["reflect", "smith_g1", "fresnel_schlick", "cosine_sample"] {
@@ -424,6 +425,69 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         String::from_utf8_lossy(&test.stderr)
     );
     mixed_renders_take_the_compiled_reference_that_fits_the_build(&dir, &library);
+}
+
+/// With `exercises/reflect.rs` not compiling (as the watch left it), the README's commands
+/// still work: `pbrlab` links no student code, so `cargo run` starts it; `tasks` builds
+/// nothing; and a grade charges the file to its task alone.
+fn one_broken_file_still_grades_through_cargo_run(dir: &Path) {
+    let broken = std::fs::read_to_string(dir.join("exercises/reflect.rs")).unwrap();
+    assert!(
+        !broken.contains("todo!"),
+        "the watch left reflect.rs broken"
+    );
+    let tasks = cargo(dir, &["run", "--release", "-q", "--", "tasks"]);
+    let stderr = String::from_utf8_lossy(&tasks.stderr);
+    assert!(tasks.status.success(), "{stderr}");
+    assert!(!stderr.contains("building the worker"), "{stderr}");
+    let table = String::from_utf8_lossy(&tasks.stdout);
+    let row = table.lines().find(|l| l.starts_with("reflect ")).unwrap();
+    assert!(
+        row.contains("edited") || row.contains("COMPILE ERROR"),
+        "{table}"
+    );
+    let grade = cargo(
+        dir,
+        &[
+            "run",
+            "--release",
+            "-q",
+            "--",
+            "grade",
+            "reflect",
+            "smith_g1",
+            "--format",
+            "json",
+        ],
+    );
+    assert!(
+        grade.status.success(),
+        "{}",
+        String::from_utf8_lossy(&grade.stderr)
+    );
+    let report: pbrlab::grade::verdict::GradeReport =
+        serde_json::from_slice(&grade.stdout).expect("a JSON report");
+    let status = |task: &str| {
+        report
+            .tasks
+            .iter()
+            .find(|t| t.task == task)
+            .map(|t| t.status.clone())
+            .unwrap_or_else(|| panic!("{task} graded"))
+    };
+    assert!(
+        matches!(
+            status("reflect"),
+            pbrlab::grade::verdict::TaskStatus::CompileError { .. }
+        ),
+        "{:?}",
+        status("reflect")
+    );
+    assert_eq!(
+        status("smith_g1"),
+        pbrlab::grade::verdict::TaskStatus::NotAttempted,
+        "a stub beside a file that does not compile is still not attempted"
+    );
 }
 
 /// `render --impl mixed` in the handout at `dir`: the student's written tasks with the

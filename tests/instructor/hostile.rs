@@ -541,7 +541,7 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
     let answers = stored_answers();
     assert!(answers.len() >= 10, "{} stored files", answers.len());
     let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
-    let worker = std::fs::read(env!("CARGO_BIN_EXE_pbrlab-worker")).expect("the worker's binary");
+    let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
     for (file, piece) in &answers {
         // The grader embeds them (so this search finds what it looks for) ...
         assert!(
@@ -556,6 +556,22 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
     }
 }
 
+#[test]
+fn only_the_worker_binary_links_the_student_crate() {
+    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
+    let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
+    // The stubs' functions keep their symbols (`_ZN16pbrlab_exercises7reflect…`).
+    assert!(
+        contains(&worker, b"16pbrlab_exercises"),
+        "the worker's binary does not link the student's crate"
+    );
+    assert!(
+        !contains(&grader, b"16pbrlab_exercises"),
+        "the pbrlab binary links student code: a compile error in an exercise file would stop \
+         `cargo run` before pbrlab starts"
+    );
+}
+
 /// The start of the legacy-mangled symbol of every function of `task`'s reference
 /// (`_ZN16pbrlab_solutions8smith_g1…`): the reference's functions are reached only through
 /// task tables, so each keeps a symbol of its own.
@@ -568,7 +584,7 @@ fn reference_symbol(task: TaskId) -> Vec<u8> {
 fn no_worker_holds_the_reference_of_the_task_it_grades() {
     use pbrlab::grade::worker::ImplSpec;
     let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
-    let worker = std::fs::read(env!("CARGO_BIN_EXE_pbrlab-worker")).expect("the worker's binary");
+    let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
     assert!(
         !contains(&worker, b"16pbrlab_solutions"),
         "the worker's binary links the reference"

@@ -153,7 +153,7 @@ pub fn gradescope(report: &GradeReport) -> Results {
         score: total(tests.iter().map(|t| t.score)),
         execution_time: report.seconds,
         output: format!(
-            "Graded {} tasks with pbrlab. Run `pbrlab grade` locally for the same public checks.",
+            "Graded {} tasks with pbrlab. Run `cargo run --release -- grade` locally for the same public checks.",
             tests.iter().filter(|t| t.visibility == "visible").count()
         ),
         visibility: "visible",

@@ -160,7 +160,7 @@ pub fn text(report: &GradeReport, detail: Detail) -> String {
             "scene",
             &names,
             points,
-            " (`pbrlab needs SCENE` names them)",
+            " (the `needs` command names them)",
         );
     }
     let _ = writeln!(s, "{rule}");
