@@ -37,8 +37,16 @@ pub fn ensure_worker() -> anyhow::Result<PathBuf> {
 }
 
 /// [`ensure_worker`] for the worker beside the binary `exe` (a test names the `pbrlab` it
-/// runs).
+/// runs), once per process: later calls return the first one's answer.
 pub fn ensure_worker_beside(exe: &Path) -> anyhow::Result<PathBuf> {
+    static ENSURED: std::sync::OnceLock<Result<PathBuf, String>> = std::sync::OnceLock::new();
+    ENSURED
+        .get_or_init(|| rebuild_if_stale(exe).map_err(|e| format!("{e:#}")))
+        .clone()
+        .map_err(anyhow::Error::msg)
+}
+
+fn rebuild_if_stale(exe: &Path) -> anyhow::Result<PathBuf> {
     let root = crate::repository_root();
     let exercises = root.join("exercises");
     let worker = worker_beside(exe);

@@ -52,26 +52,31 @@ pub fn for_spec(spec: &ImplSpec) -> anyhow::Result<BTreeMap<String, PathBuf>> {
         .collect()
 }
 
-/// The arguments of `cargo` that build the one-task libraries (add `--release` for the
-/// release profile): with the root package selected too, so that features resolve as in
-/// the instructor's own build and the libraries link the framework its worker links
-/// (one compilation of it), and without the dependencies' debug information (1 MB
-/// each instead of 58 MB). The autograder packages' set-up runs the same command.
-pub const CARGO_ARGS: &[&str] = &[
-    "build",
-    "--locked",
-    "-p",
-    "pbrlab-cli",
-    "-p",
-    "pbrlab-reference",
-    "--examples",
-    "--config",
-    "profile.release.package.pbrlab-reference.strip=\"debuginfo\"",
-];
+/// The packages every build of the reference's libraries selects (the one-task libraries
+/// here, the handout's whole compiled reference): `pbrlab-reference`, and the root package
+/// too, so that features resolve as in the instructor's own build and the libraries link
+/// the framework its binaries link (one compilation of it; alone, the reference's package
+/// resolves the dependencies' features differently and compiles them all again).
+pub const SELECTION: &[&str] = &["-p", "pbrlab-cli", "-p", "pbrlab-reference"];
 
-/// [`CARGO_ARGS`] with `--release`, as one shell command line.
+/// The arguments of `cargo` that build the one-task libraries (add `--release` for the
+/// release profile): [`SELECTION`], every example, and without the dependencies' debug
+/// information (1 MB each instead of 58 MB). The autograder packages' set-up runs the same
+/// command.
+pub fn cargo_args() -> Vec<&'static str> {
+    let mut args = vec!["build", "--locked"];
+    args.extend(SELECTION);
+    args.extend([
+        "--examples",
+        "--config",
+        "profile.release.package.pbrlab-reference.strip=\"debuginfo\"",
+    ]);
+    args
+}
+
+/// [`cargo_args`] with `--release`, as one shell command line.
 pub fn shell_command() -> String {
-    let quoted: Vec<String> = CARGO_ARGS
+    let quoted: Vec<String> = cargo_args()
         .iter()
         .map(|a| {
             if a.contains('"') {
@@ -99,7 +104,7 @@ fn build() -> anyhow::Result<BTreeMap<TaskId, PathBuf>> {
     let mut command = Command::new(&cargo);
     command
         .current_dir(crate::repository_root())
-        .args(CARGO_ARGS)
+        .args(cargo_args())
         .args(["--offline", "--message-format=json"]);
     if !cfg!(debug_assertions) {
         command.arg("--release");

@@ -63,10 +63,17 @@ pub struct Protections {
 impl Protections {
     /// True when every protection is fully in force.
     pub fn complete(&self) -> bool {
-        [&self.landlock, &self.seccomp, &self.limits]
-            .iter()
-            .all(|s| s.starts_with(IN_FORCE))
+        all_in_force(&self.to_string())
     }
+}
+
+/// True when every protection in `text`, [`Protections`] in the words a report stores
+/// (`landlock in force; seccomp partly: …; limits in force`), is fully in force.
+pub fn all_in_force(text: &str) -> bool {
+    text.split("; ").all(|part| {
+        part.split_once(' ')
+            .is_some_and(|(_, state)| state.starts_with(IN_FORCE))
+    })
 }
 
 impl std::fmt::Display for Protections {
@@ -364,7 +371,29 @@ mod syscalls {
 
 #[cfg(all(test, target_os = "linux"))]
 mod tests {
-    use super::FileScope;
+    use super::{FileScope, Protections, all_in_force};
+
+    #[test]
+    fn the_words_a_report_stores_say_whether_every_protection_was_in_force() {
+        let protections = |landlock: &str| Protections {
+            landlock: landlock.into(),
+            seccomp: "in force".into(),
+            limits: "in force".into(),
+        };
+        assert!(protections("in force").complete());
+        assert!(all_in_force(&protections("in force").to_string()));
+        for partial in [
+            "partly: no network scoping",
+            "not in force: kernel 5.10",
+            "absent",
+        ] {
+            assert!(!protections(partial).complete(), "{partial}");
+            assert!(
+                !all_in_force(&protections(partial).to_string()),
+                "{partial}"
+            );
+        }
+    }
     use std::os::unix::process::CommandExt;
     use std::path::PathBuf;
     use std::process::Command;

@@ -294,6 +294,19 @@ pub struct GradeReport {
     pub sandbox: Vec<String>,
 }
 
+impl TaskOutcome {
+    /// True for a scene whose render check waits for tasks it calls that do not pass yet.
+    pub fn scene_waits(&self) -> bool {
+        self.task.starts_with("scene: ") && matches!(self.status, TaskStatus::NeedsTask { .. })
+    }
+
+    /// True for an entry a report shows in one line with its kind rather than in a row and
+    /// a section of its own: a task not attempted yet, a scene waiting for its tasks.
+    pub fn folds(&self) -> bool {
+        self.status == TaskStatus::NotAttempted || self.scene_waits()
+    }
+}
+
 impl GradeReport {
     /// A report of `tasks`, with totals summed.
     pub fn new(

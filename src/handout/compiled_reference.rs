@@ -16,14 +16,12 @@ pub fn build(root: &Path, dest: &Path) -> anyhow::Result<PathBuf> {
         .map(PathBuf::from)
         .unwrap_or_else(|| root.join("target"));
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    // The root package is selected too, so that features resolve as in the repository's own
-    // build and the library reuses its compiled framework and dependencies (alone, the
-    // reference's crate resolves them differently and compiles them all again: about 2.7
-    // CPU-minutes).
+    // Selected as the workers' one-task libraries are, so the library reuses the
+    // repository's compiled framework and dependencies.
     let status = Command::new(&cargo)
         .current_dir(root)
         .args(["build", "--release", "--locked", "--lib"])
-        .args(["-p", "pbrlab-cli", "-p", "pbrlab-reference"])
+        .args(crate::grade::references::SELECTION)
         .args([
             "--config",
             "profile.release.package.pbrlab-reference.strip=\"symbols\"",

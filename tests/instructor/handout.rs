@@ -351,17 +351,7 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         "{}",
         String::from_utf8_lossy(&test.stderr)
     );
-    let grade = cargo(
-        &dir,
-        &["run", "--release", "-q", "--", "grade", "--format", "json"],
-    );
-    assert!(
-        grade.status.success(),
-        "{}",
-        String::from_utf8_lossy(&grade.stderr)
-    );
-    let report: pbrlab::grade::verdict::GradeReport =
-        serde_json::from_slice(&grade.stdout).expect("a JSON report");
+    let report = grade_through_cargo_run(&dir, &[]);
     assert_eq!(report.score, 0.0);
     assert!(report.max_score > 0.0);
     assert!(
@@ -427,6 +417,23 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
     mixed_renders_take_the_compiled_reference_that_fits_the_build(&dir, &library);
 }
 
+/// The JSON report of `cargo run --release -- grade TASKS` in the handout at `dir`, which
+/// must succeed.
+fn grade_through_cargo_run(dir: &Path, tasks: &[&str]) -> pbrlab::grade::verdict::GradeReport {
+    let args = [
+        &["run", "--release", "-q", "--", "grade"],
+        tasks,
+        &["--format", "json"],
+    ];
+    let grade = cargo(dir, &args.concat());
+    assert!(
+        grade.status.success(),
+        "{}",
+        String::from_utf8_lossy(&grade.stderr)
+    );
+    serde_json::from_slice(&grade.stdout).expect("a JSON report")
+}
+
 /// With `exercises/reflect.rs` not compiling (as the watch left it), the README's commands
 /// still work: `pbrlab` links no student code, so `cargo run` starts it; `tasks` builds
 /// nothing; and a grade charges the file to its task alone.
@@ -446,27 +453,7 @@ fn one_broken_file_still_grades_through_cargo_run(dir: &Path) {
         row.contains("edited") || row.contains("COMPILE ERROR"),
         "{table}"
     );
-    let grade = cargo(
-        dir,
-        &[
-            "run",
-            "--release",
-            "-q",
-            "--",
-            "grade",
-            "reflect",
-            "smith_g1",
-            "--format",
-            "json",
-        ],
-    );
-    assert!(
-        grade.status.success(),
-        "{}",
-        String::from_utf8_lossy(&grade.stderr)
-    );
-    let report: pbrlab::grade::verdict::GradeReport =
-        serde_json::from_slice(&grade.stdout).expect("a JSON report");
+    let report = grade_through_cargo_run(dir, &["reflect", "smith_g1"]);
     let status = |task: &str| {
         report
             .tasks

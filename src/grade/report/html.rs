@@ -185,15 +185,6 @@ fn check_html(c: &CheckResult, pictures: &Pictures<'_>) -> String {
     s
 }
 
-/// True for an entry the page shows in one line rather than a section: a task not
-/// attempted yet, a scene waiting for the tasks it calls.
-fn folded(t: &TaskOutcome) -> bool {
-    matches!(
-        t.status,
-        TaskStatus::NotAttempted | TaskStatus::NeedsTask { .. }
-    )
-}
-
 /// The page for `report`, with the pictures of render checks read from `dir` (the report
 /// folder they were written to) and embedded.
 pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
@@ -210,7 +201,7 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
         } else {
             "failed"
         };
-        let name = if folded(t) {
+        let name = if t.folds() {
             t.task.clone()
         } else {
             format!("<a href=\"#{0}\">{0}</a>", t.task)
@@ -244,6 +235,7 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
     let waiting: Vec<String> = report
         .tasks
         .iter()
+        .filter(|t| t.scene_waits())
         .filter_map(|t| match &t.status {
             TaskStatus::NeedsTask { task } => {
                 Some(format!("{} ({task})", t.task.trim_start_matches("scene: ")))
@@ -258,7 +250,7 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
             escape(&waiting.join("; "))
         );
     }
-    let mut shown: Vec<&TaskOutcome> = report.tasks.iter().filter(|t| !folded(t)).collect();
+    let mut shown: Vec<&TaskOutcome> = report.tasks.iter().filter(|t| !t.folds()).collect();
     shown.sort_by_key(|t| matches!(t.status, TaskStatus::Passed | TaskStatus::NoChecks));
     for t in shown {
         let _ = write!(
@@ -331,6 +323,12 @@ mod tests {
             entry("phong", TaskStatus::NotAttempted),
             entry("kajiya_kay", TaskStatus::NotAttempted),
             entry(
+                "cook_torrance",
+                TaskStatus::NeedsTask {
+                    task: "smith_g1".into(),
+                },
+            ),
+            entry(
                 "scene: smoke",
                 TaskStatus::NeedsTask {
                     task: "delta_tracking".into(),
@@ -341,6 +339,9 @@ mod tests {
         assert!(page.contains("Not attempted yet"), "{page}");
         assert!(page.contains("phong, kajiya_kay."), "{page}");
         assert!(page.contains("smoke (delta_tracking)"), "{page}");
+        // A task waiting for another is not a scene: it keeps its section.
+        assert!(page.contains("<section id=\"cook_torrance\""), "{page}");
+        assert!(!page.contains("cook_torrance (smith_g1)"), "{page}");
         for folded in ["phong", "kajiya_kay", "scene: smoke"] {
             assert!(
                 !page.contains(&format!("<section id=\"{folded}\"")),

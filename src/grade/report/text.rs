@@ -120,10 +120,7 @@ fn folded(s: &mut String, label: &str, noun: &str, names: &[&str], points: f64, 
 /// short (see [`Detail`]).
 pub fn text(report: &GradeReport, detail: Detail) -> String {
     let verbose = detail == Detail::Verbose;
-    let waits = |t: &TaskOutcome| {
-        t.task.starts_with("scene: ") && matches!(t.status, TaskStatus::NeedsTask { .. })
-    };
-    let folds = |t: &TaskOutcome| !verbose && (t.status == TaskStatus::NotAttempted || waits(t));
+    let folds = |t: &TaskOutcome| !verbose && t.folds();
     let mut s = String::new();
     row(&mut s, "task", "status", "points", "worst error", "time");
     let rule = "-".repeat(76);
@@ -153,7 +150,7 @@ pub fn text(report: &GradeReport, detail: Detail) -> String {
         };
         let (names, points) = group(&|t| t.status == TaskStatus::NotAttempted);
         folded(&mut s, "not attempted", "task", &names, points, "");
-        let (names, points) = group(&waits);
+        let (names, points) = group(&TaskOutcome::scene_waits);
         folded(
             &mut s,
             "waiting for their tasks",
@@ -173,7 +170,7 @@ pub fn text(report: &GradeReport, detail: Detail) -> String {
     row(&mut s, "total", &report.implementation, &total, "", &time);
     // The compact table names the protections only when one of them was not in force.
     for protections in &report.sandbox {
-        if verbose || protections.split("; ").any(|p| !p.ends_with(" in force")) {
+        if verbose || !crate::grade::sandbox::all_in_force(protections) {
             for line in wrap(&format!("sandbox of the workers: {protections}")) {
                 let _ = writeln!(s, "{line}");
             }

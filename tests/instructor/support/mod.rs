@@ -24,15 +24,8 @@ pub fn install() {
 /// The worker binary that runs the student's code, beside the `pbrlab` these tests run
 /// (built by the first test that asks, as `pbrlab` builds it before running student code).
 pub fn worker() -> std::path::PathBuf {
-    static WORKER: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
-    WORKER
-        .get_or_init(|| {
-            pbrlab::cli::rebuild::ensure_worker_beside(std::path::Path::new(env!(
-                "CARGO_BIN_EXE_pbrlab"
-            )))
-            .expect("building pbrlab-worker")
-        })
-        .clone()
+    let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
+    pbrlab::cli::rebuild::ensure_worker_beside(pbrlab).expect("building pbrlab-worker")
 }
 
 /// The inputs of every task (stored data, no hidden cases) for statistical seed `seed`
