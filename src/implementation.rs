@@ -1,13 +1,14 @@
 //! The implementations of [`Tasks`](crate::worksheet::Tasks) a binary links: the student's
-//! (`exercises/`, linked only by the `pbrlab-worker` binary) and, in the instructor build,
+//! (`exercises/`, linked only by `pbrlab-worker` and `pbrlab-student`) and, in the instructor build,
 //! the reference (`solutions/`), each a [`TaskFns`] table exported by its own crate.
 //!
 //! The framework never names those crates: a binary [`install`]s their tables once at start,
 //! and framework code reaches them through [`student`], [`reference()`] and [`mixed`]. So the
 //! student's crate cannot reach the reference through the framework, and an exercise edit
-//! recompiles only the exercise crate and the worker's link. The `pbrlab` binary links no
+//! recompiles only the exercise crate and the links of its two binaries. The `pbrlab` binary links no
 //! student code at all: its [`student`] table is [`TaskFns::ABSENT`], and its commands that
-//! run student code hand it to the worker binary (`crate::cli::student_side`).
+//! run student code hand them to `pbrlab-student` or the grader's workers
+//! (`crate::cli::student_side`, `crate::grade::isolation`).
 
 use crate::grade::isolation::Launcher;
 use crate::task_set::TaskSet;
@@ -18,7 +19,7 @@ use std::time::Duration;
 /// The task tables a binary links.
 #[derive(Clone, Copy, Debug)]
 pub struct Implementations {
-    /// The student's code (`exercises/`), in the one binary that links it (`pbrlab-worker`).
+    /// The student's code (`exercises/`), in the binaries that link it (`src/worker/`).
     pub student: Option<TaskFns>,
     /// The reference (`solutions/`), absent in the student handout.
     pub reference: Option<TaskFns>,
@@ -47,7 +48,7 @@ pub fn student() -> &'static TaskFns {
     installed().student.as_ref().unwrap_or(&TaskFns::ABSENT)
 }
 
-/// True in the process that links the student's code (the `pbrlab-worker` binary).
+/// True in a process that links the student's code (`pbrlab-worker`, `pbrlab-student`).
 pub fn links_student() -> bool {
     installed().student.is_some()
 }

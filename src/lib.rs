@@ -26,7 +26,8 @@
 //! only and exports a
 //! [`TaskFns`](worksheet::TaskFns) table built by [`task_table!`]. The root package
 //! (`pbrlab-cli`) links the reference into the `pbrlab` binary, and the worker package
-//! (`src/worker/`) the student's crate into `pbrlab-worker`, the only binary that links it;
+//! (`src/worker/`) the student's crate into `pbrlab-worker` and `pbrlab-student`, the
+//! only binaries that link it;
 //! each [`install`](implementation::install)s its tables. The framework is compiled once,
 //! for `TaskFns`, never for a student's type, so an exercise edit recompiles the exercise
 //! crate and the worker's link, and a compile error in it never stops `pbrlab` itself.

@@ -359,6 +359,7 @@ impl ClassRun<'_> {
         StudentBuild {
             root: self.root,
             exercises: &exercises,
+            commands: false,
             handout: !cfg!(feature = "solutions"),
             stub,
             echo: self.progress,
@@ -405,6 +406,7 @@ impl ClassRun<'_> {
             let record = StudentBuild {
                 root: self.root,
                 exercises: &exercises,
+                commands: false,
                 handout: !cfg!(feature = "solutions"),
                 stub,
                 echo: false,

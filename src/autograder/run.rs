@@ -90,6 +90,7 @@ impl Submission<'_> {
         let record = StudentBuild {
             root: self.root,
             exercises: &exercises,
+            commands: false,
             handout: !cfg!(feature = "solutions"),
             stub: &stub,
             echo: false,

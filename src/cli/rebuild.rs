@@ -1,16 +1,16 @@
-//! Keeping the worker binary current. The `pbrlab` binary links no student code: all of it
-//! runs in `pbrlab-worker` (package `src/worker/`), which links the student's crate. Before
-//! a command that runs student code, this compares the worker with the newest
-//! `exercises/*.rs` and with the running binary (a newer framework), and when the worker is
-//! older, missing, or built from another folder (a class run's submission), rebuilds it with
-//! cargo: the student's crate and a link, seconds, with cargo's progress and the compiler's
+//! Keeping the binaries that link the student's code current. The `pbrlab` binary links
+//! none: it runs in `pbrlab-worker` (grading jobs) and `pbrlab-student` (a render or study
+//! of student code), package `src/worker/`. Before a command that runs student code, this
+//! compares both with the newest `exercises/*.rs` and with the running binary (a newer
+//! framework), and when one is older, missing, or built from another folder (a class run's
+//! submission), rebuilds both with cargo: the student's crate and two links, seconds, with cargo's progress and the compiler's
 //! messages as cargo prints them. An exercise file that does not compile is built from its
 //! shipped stub ([`crate::grade::student_build`]): the other tasks still grade and render,
 //! and the grade reports the compiler's message on it. Commands that run no student code
 //! (`tasks`, `needs`, `hint`, a render of the reference) never build anything, and a compile
 //! error in an exercise file never stops `pbrlab` itself from starting.
 
-use crate::grade::isolation::worker_beside;
+use crate::grade::isolation::{STUDENT_BINARY, beside, worker_beside};
 use crate::grade::student_build::{BuildRecord, StudentBuild};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
@@ -29,51 +29,67 @@ fn newest_source(dir: &Path) -> Option<SystemTime> {
         .max()
 }
 
-/// The worker binary beside the running one, rebuilt first when it is older than an
-/// exercise file or than the running binary, missing, or built from another folder.
-pub fn ensure_worker() -> anyhow::Result<PathBuf> {
+/// The binaries that run the student's code, current.
+#[derive(Clone, Debug)]
+pub struct StudentBinaries {
+    /// `pbrlab-worker`: grading jobs and probes.
+    pub worker: PathBuf,
+    /// `pbrlab-student`: a render or convergence study of student code.
+    pub student: PathBuf,
+}
+
+/// The binaries beside the running one that run the student's code, rebuilt first when
+/// one is older than an exercise file or than the running binary, missing, or built from
+/// another folder.
+pub fn ensure_worker() -> anyhow::Result<StudentBinaries> {
     let exe = std::env::current_exe().context("locating this binary")?;
     ensure_worker_beside(&exe)
 }
 
-/// [`ensure_worker`] for the worker beside the binary `exe` (a test names the `pbrlab` it
-/// runs), once per process: later calls return the first one's answer.
-pub fn ensure_worker_beside(exe: &Path) -> anyhow::Result<PathBuf> {
-    static ENSURED: std::sync::OnceLock<Result<PathBuf, String>> = std::sync::OnceLock::new();
+/// [`ensure_worker`] for the binaries beside `exe` (a test names the `pbrlab` it runs),
+/// once per process: later calls return the first one's answer.
+pub fn ensure_worker_beside(exe: &Path) -> anyhow::Result<StudentBinaries> {
+    static ENSURED: std::sync::OnceLock<Result<StudentBinaries, String>> =
+        std::sync::OnceLock::new();
     ENSURED
         .get_or_init(|| rebuild_if_stale(exe).map_err(|e| format!("{e:#}")))
         .clone()
         .map_err(anyhow::Error::msg)
 }
 
-fn rebuild_if_stale(exe: &Path) -> anyhow::Result<PathBuf> {
+fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
     let root = crate::repository_root();
     let exercises = root.join("exercises");
-    let worker = worker_beside(exe);
+    let binaries = StudentBinaries {
+        worker: worker_beside(exe),
+        student: beside(exe, STUDENT_BINARY),
+    };
+    let worker = &binaries.worker;
     let modified = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified()).ok();
     // A build from another folder (`grade-class` builds each submission here) is not the
     // student's.
-    let elsewhere = BuildRecord::of(&worker)
+    let elsewhere = BuildRecord::of(worker)
         .is_some_and(|r| r.exercises.canonicalize().ok() != exercises.canonicalize().ok());
     let newest = [newest_source(&exercises), modified(exe)]
         .into_iter()
         .flatten()
         .max();
-    let current = match (modified(&worker), newest) {
+    let current = |binary: &Path| match (modified(binary), newest) {
         (Some(built), Some(newest)) => built >= newest,
         (built, _) => built.is_some(),
     };
-    if current && !elsewhere {
-        return Ok(worker);
+    if current(worker) && current(&binaries.student) && !elsewhere {
+        return Ok(binaries);
     }
     eprintln!(
-        "pbrlab: building the worker that runs your code (pbrlab-worker: exercises/ is newer, \
-         or it is missing)"
+        "pbrlab: building the binaries that run your code (pbrlab-worker, pbrlab-student: \
+         exercises/ is newer, or one is missing)"
     );
     let stub = |task| crate::handout::stubs::shipped(root, task);
     let record = StudentBuild {
         root,
         exercises: &exercises,
+        commands: true,
         handout: !cfg!(feature = "solutions"),
         stub: &stub,
         echo: true,
@@ -84,13 +100,13 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<PathBuf> {
     .run()
     .context("fix the error above and run the command again")?;
     anyhow::ensure!(
-        same_file(&record.worker, &worker),
+        same_file(&record.worker, worker),
         "cargo built the worker at {}, not beside this binary ({}): run pbrlab from the \
          target folder cargo builds into",
         record.worker.display(),
         worker.display()
     );
-    Ok(worker)
+    Ok(binaries)
 }
 
 fn same_file(a: &Path, b: &Path) -> bool {

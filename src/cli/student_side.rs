@@ -1,11 +1,12 @@
 //! The commands that run student code in their own process: a render (`--impl student` or
 //! `mixed`) and a convergence study of it. The `pbrlab` binary links no student code, so it
-//! hands such a command line to the worker binary, `pbrlab-worker`, which links the
-//! student's crate: [`delegate`] rebuilds the worker when an exercise file is newer
-//! ([`super::rebuild`]) and runs it with the same arguments after [`COMMAND_MODE`]; the
-//! worker's `main` calls [`main`], which takes the reference (for a mix, or a study's ground
-//! truth) from its compiled libraries, as a grading worker does, and enters the sandbox
-//! before the student's code runs (`render::run`, `converge::run`).
+//! hands such a command line to `pbrlab-student` (package `src/worker/`), which links the
+//! student's crate: [`delegate`] rebuilds it when an exercise file is newer
+//! ([`super::rebuild`]) and runs it with the same arguments; its `main` calls [`main`],
+//! which takes the reference (for a mix, or a study's ground truth) from its compiled
+//! libraries, as a grading worker does, and enters the sandbox before the student's code
+//! runs (`render::run`, `converge::run`). The grading worker, `pbrlab-worker`, stays
+//! without any of this.
 
 use super::{Cli, Command, converge, render};
 use crate::grade::references;
@@ -17,14 +18,10 @@ use clap::Parser;
 use std::ffi::OsString;
 use std::process::ExitStatus;
 
-/// The first argument that makes `pbrlab-worker` run a command line instead of a grading
-/// job.
-pub const COMMAND_MODE: &str = "--command";
-
-/// The worker ran the command and it failed: it has printed its error, and `pbrlab` exits
-/// with its status.
+/// `pbrlab-student` ran the command and it failed: it has printed its error, and `pbrlab`
+/// exits with its status.
 #[derive(Debug, thiserror::Error)]
-#[error("pbrlab-worker {0}")]
+#[error("pbrlab-student {0}")]
 pub struct WorkerExit(pub ExitStatus);
 
 impl WorkerExit {
@@ -39,16 +36,15 @@ impl WorkerExit {
     }
 }
 
-/// In `pbrlab`: runs this process's command line in the worker binary (rebuilt first when
+/// In `pbrlab`: runs this process's command line in `pbrlab-student` (rebuilt first when
 /// stale), which prints to the same terminal.
 pub fn delegate() -> anyhow::Result<()> {
-    let worker = super::rebuild::ensure_worker()?;
-    let status = std::process::Command::new(&worker)
+    let student = super::rebuild::ensure_worker()?.student;
+    let status = std::process::Command::new(&student)
         .env(super::INVOCATION, super::invocation())
-        .arg(COMMAND_MODE)
         .args(std::env::args_os().skip(1))
         .status()
-        .with_context(|| format!("running {}", worker.display()))?;
+        .with_context(|| format!("running {}", student.display()))?;
     if status.success() {
         Ok(())
     } else {
@@ -56,9 +52,9 @@ pub fn delegate() -> anyhow::Result<()> {
     }
 }
 
-/// In `pbrlab-worker`: runs the command line `args` (what followed [`COMMAND_MODE`]) with
-/// `student`, the student's table this binary links. Only the commands that [`delegate`]
-/// run here.
+/// In `pbrlab-student`: runs the command line `args` (`pbrlab`'s, without the program name)
+/// with `student`, the student's table this binary links. Only the commands that
+/// [`delegate`] run here.
 pub fn main(student: TaskFns, args: impl Iterator<Item = OsString>) -> std::process::ExitCode {
     let cli = Cli::parse_from(std::iter::once(OsString::from("pbrlab")).chain(args));
     super::finish(run(student, cli))
@@ -82,7 +78,7 @@ fn run(student: TaskFns, cli: Cli) -> anyhow::Result<()> {
         None => render::run(render::Args::default()),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Converge(args)) => converge::run(args),
-        Some(other) => bail!("pbrlab-worker runs renders and convergence studies, not {other:?}"),
+        Some(other) => bail!("pbrlab-student runs renders and convergence studies, not {other:?}"),
     }
 }
 

@@ -19,9 +19,18 @@ use std::time::{Duration, Instant};
 /// The name of the binary that runs student code for the grader (`src/worker/main.rs`).
 pub const WORKER_BINARY: &str = "pbrlab-worker";
 
+/// The name of the binary that runs the commands of student code, a render or a
+/// convergence study (`src/worker/student.rs`, `crate::cli::student_side`).
+pub const STUDENT_BINARY: &str = "pbrlab-student";
+
 /// The worker binary built beside the binary `exe`.
 pub fn worker_beside(exe: &Path) -> PathBuf {
-    exe.with_file_name(format!("{WORKER_BINARY}{}", std::env::consts::EXE_SUFFIX))
+    beside(exe, WORKER_BINARY)
+}
+
+/// The binary `name` built beside the binary `exe`.
+pub fn beside(exe: &Path, name: &str) -> PathBuf {
+    exe.with_file_name(format!("{name}{}", std::env::consts::EXE_SUFFIX))
 }
 
 /// Threads a worker's renders may use.

@@ -65,6 +65,9 @@ pub struct StudentBuild<'a> {
     pub root: &'a Path,
     /// The folder of the exercise files to compile (`exercises/`, or a submission's copy).
     pub exercises: &'a Path,
+    /// Build the binary of the commands that run student code too (`pbrlab-student`: a
+    /// local build, for `render` and `converge`; a class run needs only the worker).
+    pub commands: bool,
     /// Build without the reference (the student handout).
     pub handout: bool,
     /// The shipped stub of a task.
@@ -110,8 +113,9 @@ const SYSTEM_FOLDERS: &[&str] = &[
     "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/etc", "/proc", "/sys", "/dev",
 ];
 
-/// What cargo builds: the worker binary of its package (`src/worker/`), with the root
-/// package selected too so that features resolve as in the `pbrlab` binary's own build and
+/// What cargo builds: the worker binary of its package (`src/worker/`; with
+/// [`StudentBuild::commands`], `pbrlab-student` beside it), with the root package selected
+/// too so that features resolve as in the `pbrlab` binary's own build and
 /// both link one compilation of the framework.
 pub const WORKER_SELECTION: &[&str] = &[
     "-p",
@@ -282,6 +286,12 @@ impl StudentBuild<'_> {
             .current_dir(self.root)
             .args(["build", "--release", "--message-format=json"])
             .args(WORKER_SELECTION)
+            .args(
+                self.commands
+                    .then_some(["--bin", super::isolation::STUDENT_BINARY])
+                    .into_iter()
+                    .flatten(),
+            )
             .stdout(Stdio::piped())
             .stderr(Stdio::piped());
         // A build without the reference in the instructor's repository (whose default
@@ -609,6 +619,7 @@ mod tests {
         let build = StudentBuild {
             root: dir.path(),
             exercises: &exercises,
+            commands: false,
             handout: false,
             stub: &stub,
             echo: false,

@@ -557,14 +557,19 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
 }
 
 #[test]
-fn only_the_worker_binary_links_the_student_crate() {
-    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
-    let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
+fn only_the_worker_binaries_link_the_student_crate() {
+    let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
+    let grader = std::fs::read(pbrlab).expect("the grader's binary");
+    let built = pbrlab::cli::rebuild::ensure_worker_beside(pbrlab).expect("the worker binaries");
     // The stubs' functions keep their symbols (`_ZN16pbrlab_exercises7reflect…`).
-    assert!(
-        contains(&worker, b"16pbrlab_exercises"),
-        "the worker's binary does not link the student's crate"
-    );
+    for binary in [built.worker, built.student] {
+        let bytes = std::fs::read(&binary).expect("a worker binary");
+        assert!(
+            contains(&bytes, b"16pbrlab_exercises"),
+            "{} does not link the student's crate",
+            binary.display()
+        );
+    }
     assert!(
         !contains(&grader, b"16pbrlab_exercises"),
         "the pbrlab binary links student code: a compile error in an exercise file would stop \
