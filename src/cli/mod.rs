@@ -1,7 +1,7 @@
 //! The `pbrlab` command line: one file per subcommand. The `pbrlab` binary runs it with the
 //! reference's table and no student code; the commands that run student code (a render or
-//! a convergence study of it) run in the worker binary instead ([`student_side`]), and the
-//! grader's commands send it jobs ([`crate::grade::isolation`]).
+//! a convergence study of it) run in `pbrlab-student` instead ([`student_side`]), and the
+//! grader's commands send jobs to `pbrlab-worker` ([`crate::grade::isolation`]).
 
 mod autograder;
 mod converge;
@@ -66,8 +66,8 @@ pub enum Command {
     Power(power::Args),
 }
 
-/// The environment variable in which `pbrlab` passes [`invocation`] to a command the worker
-/// runs for it.
+/// The environment variable in which `pbrlab` passes [`invocation`] to a command that
+/// `pbrlab-student` runs for it.
 const INVOCATION: &str = "PBRLAB_INVOCATION";
 
 /// How the user started pbrlab, for messages that name another command (`{} hint TASK`):
@@ -103,7 +103,7 @@ pub fn main() -> std::process::ExitCode {
 }
 
 /// The exit code of a command's result, printing the error (and its causes) of a failure.
-/// A command the worker ran has printed its own.
+/// A command `pbrlab-student` ran has printed its own.
 pub fn finish(result: anyhow::Result<()>) -> std::process::ExitCode {
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
@@ -121,7 +121,7 @@ pub fn finish(result: anyhow::Result<()>) -> std::process::ExitCode {
 pub fn run(cli: Cli) -> anyhow::Result<()> {
     // The grader's commands run every job in the worker binary, which must hold the
     // student's code as it is now. (A render or a study of student code hands itself to
-    // the worker, rebuilding it first: `student_side`.)
+    // `pbrlab-student`, rebuilding both first: `student_side`.)
     if matches!(cli.command, Some(Command::Grade(_) | Command::Stability(_))) {
         rebuild::ensure_worker()?;
     }

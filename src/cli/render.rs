@@ -177,7 +177,7 @@ pub fn run(args: Args) -> Result<()> {
         } else {
             ImplChoice::Student
         });
-    // Student code runs in the worker binary: the scene is checked here first, so that a
+    // Student code runs in `pbrlab-student`: the scene is checked here first, so that a
     // mistake in it is reported before any build.
     if choice != ImplChoice::Reference && !crate::implementation::links_student() {
         return super::student_side::delegate();

@@ -25,7 +25,7 @@ use std::process::ExitStatus;
 pub struct WorkerExit(pub ExitStatus);
 
 impl WorkerExit {
-    /// The exit code to pass on (1 for a worker killed by a signal).
+    /// The exit code to pass on (1 for a process killed by a signal).
     pub fn code(&self) -> std::process::ExitCode {
         let code = self
             .0
