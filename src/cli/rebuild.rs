@@ -70,10 +70,18 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
     // student's.
     let elsewhere = BuildRecord::of(worker)
         .is_some_and(|r| r.exercises.canonicalize().ok() != exercises.canonicalize().ok());
-    let newest = [newest_source(&exercises), modified(exe)]
-        .into_iter()
-        .flatten()
-        .max();
+    // Cargo links `pbrlab` and the two binaries in one build in any order, so a binary a
+    // few milliseconds older than `pbrlab` may be current: the stamp of the last rebuild
+    // says which `pbrlab` cargo found them current for.
+    let confirmed =
+        Confirmed::of(exe, &binaries).is_some_and(|now| Confirmed::read(&binaries) == Some(now));
+    let newest = [
+        newest_source(&exercises),
+        modified(exe).filter(|_| !confirmed),
+    ]
+    .into_iter()
+    .flatten()
+    .max();
     let current = |binary: &Path| match (modified(binary), newest) {
         (Some(built), Some(newest)) => built >= newest,
         (built, _) => built.is_some(),
@@ -82,8 +90,8 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
         return Ok(binaries);
     }
     eprintln!(
-        "pbrlab: building the binaries that run your code (pbrlab-worker, pbrlab-student: \
-         exercises/ is newer, or one is missing)"
+        "pbrlab: building pbrlab-worker and pbrlab-student, which run your code\n\
+         (exercises/ or pbrlab is newer than them, or one is missing)"
     );
     let stub = |task| crate::handout::stubs::shipped(root, task);
     let record = StudentBuild {
@@ -106,7 +114,53 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
         record.worker.display(),
         worker.display()
     );
+    if let Some(stamp) = Confirmed::of(exe, &binaries) {
+        stamp.write(&binaries);
+    }
     Ok(binaries)
+}
+
+/// The modification times (nanoseconds since 1970) of `pbrlab` and the two binaries when
+/// cargo last found the two current for that `pbrlab`: [`CONFIRMED`] beside them.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+struct Confirmed {
+    pbrlab: u128,
+    worker: u128,
+    student: u128,
+}
+
+/// The file, beside the binaries, of [`Confirmed`].
+const CONFIRMED: &str = "pbrlab-binaries-confirmed.json";
+
+impl Confirmed {
+    /// The times of `exe` and `binaries` now (`None` when one is missing).
+    fn of(exe: &Path, binaries: &StudentBinaries) -> Option<Self> {
+        let nanos = |file: &Path| {
+            let time = std::fs::metadata(file).and_then(|m| m.modified()).ok()?;
+            Some(time.duration_since(std::time::UNIX_EPOCH).ok()?.as_nanos())
+        };
+        Some(Self {
+            pbrlab: nanos(exe)?,
+            worker: nanos(&binaries.worker)?,
+            student: nanos(&binaries.student)?,
+        })
+    }
+
+    /// The stamp written by the last rebuild (`None` when there is none that reads).
+    fn read(binaries: &StudentBinaries) -> Option<Self> {
+        let text = std::fs::read_to_string(binaries.worker.with_file_name(CONFIRMED)).ok()?;
+        serde_json::from_str(&text).ok()
+    }
+
+    /// Writes the stamp; a stamp that cannot be written costs a no-op cargo call next time.
+    fn write(&self, binaries: &StudentBinaries) {
+        if let Ok(text) = serde_json::to_string(self) {
+            let _ = crate::atomic_file::write(
+                &binaries.worker.with_file_name(CONFIRMED),
+                text.as_bytes(),
+            );
+        }
+    }
 }
 
 fn same_file(a: &Path, b: &Path) -> bool {
