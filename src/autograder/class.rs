@@ -6,12 +6,16 @@
 //! (`students/<id>.json`), so an interrupted run continues where it stopped; the class
 //! table (`class.csv`) and summary (`summary.md`) are written from all results at the end.
 
+use super::gradebook::{self, Roster};
+use super::item_analysis;
 use super::regrade::StudentChange;
 use super::submission::{self, Intake};
 use crate::grade::credit::Credit;
+use crate::grade::feedback::{self, Feedback};
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
-use crate::grade::runner::{GradeOptions, grade};
+use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::{BuildFailure, StudentBuild};
+use crate::grade::variant::Variant;
 use crate::grade::verdict::{GradeReport, TaskStatus, format_points};
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
@@ -25,6 +29,16 @@ use std::time::{Duration, Instant};
 /// The status of a result that is not a grade: the grading machinery failed (the framework
 /// did not build, a crash of the grader). Such a result is graded again on the next run.
 pub const NOT_GRADED: &str = "not graded";
+
+/// The class-wide files a run writes from all results (a regrade keeps the old ones in
+/// `history/<time>/`).
+const TABLES: [&str; 5] = [
+    "class.csv",
+    "canvas.csv",
+    "moodle.csv",
+    "summary.md",
+    "summary.html",
+];
 
 /// The status of a submission whose build ran into its bounds (a compile-time bomb): a
 /// grade of 0, which a rerun keeps.
@@ -74,6 +88,15 @@ pub struct ClassRun<'a> {
     /// what changed ([`super::regrade`]). A new result that is not a grade keeps the saved
     /// one.
     pub regrade: bool,
+    /// How much of a failing case the feedback handed back shows (`students/<name>.txt`
+    /// and `students/<name>/index.html`); the saved results stay in full.
+    pub feedback: Feedback,
+    /// The course secret of per-student variants: each student's hidden cases and seeds
+    /// come from it and the student's name ([`Variant`]), in place of `hidden_seed`.
+    pub variant_key: Option<String>,
+    /// The class list that maps submission names to the gradebooks' students
+    /// ([`super::gradebook::Roster`]).
+    pub roster: Option<PathBuf>,
 }
 
 /// The submissions in `dir`: each subfolder and zip file, by student name.
@@ -245,7 +268,7 @@ impl ClassRun<'_> {
                 &self.out.join("changes.json"),
                 serde_json::to_string_pretty(&changes)?.as_bytes(),
             )?;
-            for table in ["class.csv", "summary.md"] {
+            for table in TABLES {
                 let from = self.out.join(table);
                 if from.is_file() {
                     std::fs::create_dir_all(&history)?;
@@ -448,10 +471,19 @@ impl ClassRun<'_> {
             args: Vec::new(),
             env: Vec::new(),
         };
+        let variant = self
+            .variant_key
+            .as_deref()
+            .map(|key| Variant::of(key, &built.student));
         let options = GradeOptions {
             implementation: ImplChoice::Student,
-            // Per submission, from the course's seed and the files: a leak serves no one else.
-            hidden_seed: self.hidden_seed.map(|seed| built.intake.hidden_seed(seed)),
+            seed: variant.as_ref().map_or(DEFAULT_SEED, |v| v.seed),
+            // The student's own variant; or per submission, from the course's seed and the
+            // files: either way a leak serves no one else.
+            hidden_seed: match &variant {
+                Some(v) => Some(v.hidden_seed),
+                None => self.hidden_seed.map(|seed| built.intake.hidden_seed(seed)),
+            },
             timeout: self.task_timeout,
             memory_limit: self.memory_limit,
             jobs: 1,
@@ -460,7 +492,10 @@ impl ClassRun<'_> {
             ..GradeOptions::default()
         };
         let (status, message, report) = match grade(&options, &launcher) {
-            Ok(report) => ("graded".to_string(), String::new(), Some(report)),
+            Ok(mut report) => {
+                report.variant = variant.map(|v| v.id);
+                ("graded".to_string(), String::new(), Some(report))
+            }
             Err(e) => (NOT_GRADED.to_string(), format!("{e:#}"), None),
         };
         StudentResult {
@@ -488,12 +523,13 @@ impl ClassRun<'_> {
     fn save(&self, result: &StudentResult) -> anyhow::Result<()> {
         let file = self.result_file(&result.student);
         if let Some(report) = &result.report {
+            let shown = feedback::redact(report, self.feedback);
             crate::atomic_file::write(
                 &file.with_extension("txt"),
-                crate::grade::report::text(report, crate::grade::report::Detail::Verbose)
+                crate::grade::report::text(&shown, crate::grade::report::Detail::Verbose)
                     .as_bytes(),
             )?;
-            crate::grade::report::write_html(report, &file.with_extension(""))?;
+            crate::grade::report::write_html(&shown, &file.with_extension(""))?;
         }
         let json = serde_json::to_string_pretty(result)?;
         crate::atomic_file::write(&file, json.as_bytes())
@@ -518,6 +554,37 @@ impl ClassRun<'_> {
         crate::atomic_file::write(
             &self.out.join("summary.md"),
             summary(&results, &entries).as_bytes(),
+        )?;
+        crate::atomic_file::write(
+            &self.out.join("summary.html"),
+            item_analysis::html(
+                &entry_summary(&results, &entries),
+                &check_rows(&results, &entries),
+            )
+            .as_bytes(),
+        )?;
+        let roster = match &self.roster {
+            Some(path) => Roster::load(path)?,
+            None => Roster::default(),
+        };
+        if self.roster.is_some() {
+            let unmatched = roster.unmatched(results.iter().map(|r| r.student.as_str()));
+            if !unmatched.is_empty() {
+                eprintln!(
+                    "warning: the class list names no student for {} submission(s): {} \
+                     (exported under their submission names)",
+                    unmatched.len(),
+                    unmatched.join(", ")
+                );
+            }
+        }
+        crate::atomic_file::write(
+            &self.out.join("canvas.csv"),
+            gradebook::canvas(&results, &entries, &roster)?.as_bytes(),
+        )?;
+        crate::atomic_file::write(
+            &self.out.join("moodle.csv"),
+            gradebook::moodle(&results, &entries, &roster)?.as_bytes(),
         )?;
         Ok(())
     }
@@ -579,9 +646,22 @@ pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
     s
 }
 
-/// Per entry: mean points, how many passed, failed, did not compile, crashed or were not
-/// attempted, and the check that failed most often in the submissions that failed it.
+/// `summary.md`: the class's counts and [`entry_summary`], then the item analysis per check
+/// ([`item_analysis`]).
 pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
+    entry_summary(results, entries) + &item_analysis::markdown(&check_rows(results, entries))
+}
+
+/// The item analysis of the graded `results`.
+fn check_rows(results: &[StudentResult], entries: &[String]) -> Vec<item_analysis::CheckRow> {
+    let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
+    item_analysis::rows(&graded, entries)
+}
+
+/// The class's counts, then per entry: mean points, how many passed, failed, did not
+/// compile, crashed or were not attempted, and the check that failed most often in the
+/// submissions that failed it.
+pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
     let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
     let count_status = |status: &str| results.iter().filter(|r| r.status == status).count();
     let mut s = format!(
@@ -640,47 +720,6 @@ pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
             common.replace('|', "/")
         );
     }
-    s += &item_analysis(&graded, entries);
-    s
-}
-
-/// Per entry and per check, how many of the submissions that ran the check passed it (a
-/// task not attempted, not compiled or crashed before the check ran does not count), the
-/// hardest checks first within each entry.
-fn item_analysis(graded: &[&GradeReport], entries: &[String]) -> String {
-    let mut s = String::from(
-        "\n## Checks\n\nPer check, of the submissions that ran it: how many passed.\n\n\
-         | entry | check | passed | ran | pass rate |\n|---|---|---|---|---|\n",
-    );
-    for e in entries {
-        let mut checks: BTreeMap<&str, (usize, usize)> = BTreeMap::new();
-        for outcome in graded.iter().filter_map(|g| g.task(e)) {
-            if matches!(
-                outcome.status,
-                TaskStatus::NotAttempted | TaskStatus::NeedsTask { .. }
-            ) {
-                continue;
-            }
-            for c in &outcome.checks {
-                let (passed, ran) = checks.entry(c.name.as_str()).or_default();
-                *ran += 1;
-                *passed += usize::from(c.passed);
-            }
-        }
-        let mut rows: Vec<_> = checks.into_iter().collect();
-        rows.sort_by(|a, b| {
-            let rate = |(passed, ran): (usize, usize)| passed as f64 / ran as f64;
-            rate(a.1).total_cmp(&rate(b.1)).then(a.0.cmp(b.0))
-        });
-        for (check, (passed, ran)) in rows {
-            let _ = writeln!(
-                s,
-                "| {e} | {} | {passed} | {ran} | {:.0} % |",
-                check.replace('|', "/"),
-                100.0 * passed as f64 / ran as f64
-            );
-        }
-    }
     s
 }
 
@@ -704,40 +743,6 @@ mod tests {
         std::fs::create_dir(dir.path().join("alice")).unwrap();
         assert!(submissions(dir.path()).is_err(), "alice twice");
         assert_eq!(file_name("a/b c"), "a_b_c");
-    }
-
-    #[test]
-    fn the_check_table_counts_the_submissions_that_ran_each_check_hardest_first() {
-        use crate::grade::verdict::{CheckKind, CheckResult, TaskOutcome};
-        let report = |status: TaskStatus, values: bool| {
-            let check = |name: &str, passed: bool| {
-                let mut c = CheckResult::new(name, CheckKind::Values);
-                c.passed = passed;
-                c
-            };
-            let task = TaskOutcome {
-                task: "smith_g1".into(),
-                status,
-                points: 0.0,
-                max_points: 6.0,
-                checks: vec![check("values", values), check("stability", false)],
-                output: String::new(),
-                seconds: 0.0,
-            };
-            GradeReport::new("student", 1, false, vec![task], 1.0)
-        };
-        let reports = [
-            report(TaskStatus::Failed, true),
-            report(TaskStatus::Failed, false),
-            // Never ran: not counted.
-            report(TaskStatus::NotAttempted, false),
-        ];
-        let graded: Vec<&GradeReport> = reports.iter().collect();
-        let text = item_analysis(&graded, &["smith_g1".to_string()]);
-        let stability = text.find("| smith_g1 | stability | 0 | 2 | 0 % |");
-        let values = text.find("| smith_g1 | values | 1 | 2 | 50 % |");
-        assert!(stability.is_some() && values.is_some(), "{text}");
-        assert!(stability < values, "hardest first: {text}");
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! student never sees it), so the hidden seed is safe there.
 
 use crate::grade::credit::Credit;
+use crate::grade::feedback::Feedback;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -29,6 +30,15 @@ pub struct Config {
     /// or `{"policy": "threshold", "fraction": 0.9}`).
     #[serde(default)]
     pub credit: Credit,
+    /// How much of a failing case a student sees (`"full"`, `"actual"`: input and output,
+    /// never the expected answer, or `"none"`: which checks failed).
+    #[serde(default)]
+    pub feedback: Feedback,
+    /// The course secret of per-student variants: set, each student's hidden cases and
+    /// seeds come from it and the student's id (Gradescope's user id, PrairieLearn's
+    /// variant seed) in place of `hidden_seed` and `seed`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub variant_key: Option<String>,
 }
 
 impl Config {
@@ -42,6 +52,8 @@ impl Config {
             memory_limit_mb: 4096,
             jobs: 1,
             credit: Credit::default(),
+            feedback: Feedback::default(),
+            variant_key: None,
         }
     }
 

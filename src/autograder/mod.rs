@@ -7,6 +7,8 @@
 
 pub mod class;
 pub mod config;
+pub mod gradebook;
+pub mod item_analysis;
 pub mod package;
 pub mod regrade;
 pub mod run;

@@ -43,17 +43,16 @@ fn uuid() -> String {
 }
 
 /// Writes the package for `service` into the new or empty folder `out`, from the
-/// repository at `root`; `hidden_seed` is drawn at random when not given. Returns the files
-/// written, relative to `out`.
+/// repository at `root`, grading with `config` (see [`Config::new`]; the CLI draws the
+/// hidden seed at random). Returns the files written, relative to `out`.
 pub fn write(
     root: &Path,
     out: &Path,
     service: Service,
-    hidden_seed: Option<u64>,
+    config: &Config,
 ) -> anyhow::Result<Vec<PathBuf>> {
     crate::handout::refuse_non_empty(out)?;
     let mut written = write_source(root, &out.join(SOURCE))?;
-    let config = Config::new(hidden_seed.unwrap_or_else(random_u64));
     let settings = out.join(SOURCE).join(config::FILE);
     std::fs::write(&settings, serde_json::to_string_pretty(&config)?)
         .with_context(|| format!("writing {}", settings.display()))?;

@@ -8,10 +8,12 @@
 use super::config::Config;
 use super::schema::{Service, validate};
 use super::submission::{self, Intake};
+use crate::grade::feedback;
 use crate::grade::isolation::Launcher;
 use crate::grade::report::{self, gradescope, prairielearn};
 use crate::grade::runner::{GradeOptions, grade};
 use crate::grade::student_build::StudentBuild;
+use crate::grade::variant::Variant;
 use crate::grade::verdict::GradeReport;
 use crate::implementation::ImplChoice;
 use anyhow::Context;
@@ -34,6 +36,10 @@ pub struct Submission<'a> {
     pub files: &'a Path,
     /// Where the results file goes.
     pub results: &'a Path,
+    /// The service's description of the submission (Gradescope's
+    /// `submission_metadata.json`, PrairieLearn's `data.json`): the student's id, for a
+    /// package that grades per-student variants.
+    pub metadata: Option<&'a Path>,
 }
 
 /// A graded submission, before it is written in a service's format.
@@ -105,11 +111,19 @@ impl Submission<'_> {
             args: Vec::new(),
             env: Vec::new(),
         };
+        let variant = match &self.config.variant_key {
+            Some(key) => Some(Variant::of(key, &self.student()?)),
+            None => None,
+        };
         let options = GradeOptions {
             implementation: ImplChoice::Student,
-            seed: self.config.seed,
-            // Per submission: a leak of hidden inputs serves one submission only.
-            hidden_seed: Some(intake.hidden_seed(self.config.hidden_seed)),
+            seed: variant.as_ref().map_or(self.config.seed, |v| v.seed),
+            // The student's own variant; or per submission: either way a leak of hidden
+            // inputs serves one student only.
+            hidden_seed: Some(match &variant {
+                Some(v) => v.hidden_seed,
+                None => intake.hidden_seed(self.config.hidden_seed),
+            }),
             timeout: Duration::from_secs_f64(self.config.task_timeout.max(1.0)),
             memory_limit: self.config.memory_limit_mb << 20,
             jobs: self.config.jobs.max(1),
@@ -119,8 +133,55 @@ impl Submission<'_> {
         };
         let mut report = grade(&options, &launcher)?;
         report.seconds = start.elapsed().as_secs_f64();
+        report.variant = variant.map(|v| v.id);
+        // The grader's log (hidden from students) in full; the results as the course shows
+        // them.
         println!("{}", report::text(&report, report::Detail::Verbose));
+        let report = feedback::redact(&report, self.config.feedback);
         Ok(Graded { intake, report })
+    }
+
+    /// The student's id in the service's description of the submission: Gradescope's
+    /// `users[0].id` (with the other users of a group submission), PrairieLearn's
+    /// `variant_seed` (PrairieLearn gives a grader no user, and its variant is per student).
+    fn student(&self) -> anyhow::Result<String> {
+        let path = self.metadata.context(
+            "the package grades per-student variants, and the service gave no description \
+             of the submission (--metadata)",
+        )?;
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("reading {} (the student's id)", path.display()))?;
+        let value: serde_json::Value = serde_json::from_str(&text)
+            .with_context(|| format!("reading {} (the student's id)", path.display()))?;
+        let id = |v: &serde_json::Value| match v {
+            serde_json::Value::String(s) if !s.is_empty() => Some(s.clone()),
+            serde_json::Value::Number(n) => Some(n.to_string()),
+            _ => None,
+        };
+        let found = match self.service {
+            Service::Gradescope => {
+                let mut ids: Vec<String> = value["users"]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .filter_map(|u| id(&u["id"]).or_else(|| id(&u["email"])))
+                    .collect();
+                // A group's variant is the group's, whoever of it submits.
+                ids.sort();
+                (!ids.is_empty()).then(|| ids.join("+"))
+            }
+            Service::Prairielearn => id(&value["variant_seed"]),
+        };
+        found.with_context(|| {
+            format!(
+                "{} names no student ({})",
+                path.display(),
+                match self.service {
+                    Service::Gradescope => "users[].id",
+                    Service::Prairielearn => "variant_seed",
+                }
+            )
+        })
     }
 
     fn results_json(&self, graded: &Graded, start: Instant) -> String {

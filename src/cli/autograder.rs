@@ -36,6 +36,16 @@ pub struct PackageArgs {
     /// The seed of the hidden cases (default: drawn at random and kept in the package).
     #[arg(long)]
     pub hidden_seed: Option<u64>,
+    /// How much of a failing case a student sees: full, actual (input and their output,
+    /// never the expected answer) or none (which checks failed). Kept in the package's
+    /// settings (`feedback`).
+    #[arg(long, value_enum, default_value = "full")]
+    pub feedback: crate::grade::feedback::Feedback,
+    /// A course secret for per-student variants: each student's hidden cases and seeds
+    /// come from it and their id (Gradescope's user id, PrairieLearn's variant seed), in
+    /// place of the hidden seed. Kept in the package's settings (`variant_key`).
+    #[arg(long, conflicts_with = "hidden_seed")]
+    pub variant_key: Option<String>,
 }
 
 /// Arguments of `pbrlab autograder run`.
@@ -53,6 +63,11 @@ pub struct RunArgs {
     /// The results format.
     #[arg(long, value_enum)]
     pub service: Service,
+    /// The service's description of the submission, for the student's id when the package
+    /// grades per-student variants: Gradescope's submission_metadata.json, PrairieLearn's
+    /// data.json.
+    #[arg(long)]
+    pub metadata: Option<PathBuf>,
 }
 
 /// Runs `pbrlab autograder`.
@@ -81,6 +96,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 service: r.service,
                 files: &r.submission,
                 results: &r.results,
+                metadata: r.metadata.as_deref(),
             }
             .run()
         }
@@ -88,7 +104,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 }
 
 fn write(root: &std::path::Path, p: PackageArgs, service: Service) -> anyhow::Result<()> {
-    let files = package::write(root, &p.out, service, p.hidden_seed)
+    let config = Config {
+        feedback: p.feedback,
+        variant_key: p.variant_key,
+        ..Config::new(p.hidden_seed.unwrap_or_else(crate::entropy::random_u64))
+    };
+    let files = package::write(root, &p.out, service, &config)
         .with_context(|| format!("writing the package into {}", p.out.display()))?;
     eprintln!("wrote {} files into {}", files.len(), p.out.display());
     match service {

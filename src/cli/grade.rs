@@ -1,10 +1,12 @@
 use crate::grade::calibration;
 use crate::grade::credit::Credit;
+use crate::grade::feedback::{self, Feedback};
 use crate::grade::history;
 use crate::grade::isolation::Launcher;
 use crate::grade::report::{self, Format};
 use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::BuildRecord;
+use crate::grade::variant::Variant;
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
@@ -60,6 +62,19 @@ pub struct Args {
     /// against its declared false-failure rate (for `--impl reference`).
     #[arg(long)]
     pub repeat: Option<usize>,
+    /// How much of a failing case the report shows: full (input, your output, the
+    /// expected answer), actual (input and your output only) or none (which checks
+    /// failed). Applies to every format and the HTML page.
+    #[arg(long, value_enum, default_value = "full")]
+    pub feedback: Feedback,
+    /// Grade one student's variant: their own hidden cases and seeds, drawn from this
+    /// course secret and `--student` (as `grade-class --variant-key` does).
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "repeat"])]
+    pub variant_key: Option<String>,
+    /// The student whose variant `--variant-key` grades (the submission's name in a
+    /// class run).
+    #[arg(long, requires = "variant_key")]
+    pub student: Option<String>,
 }
 
 /// Grades, prints or writes the report, and remembers the grade for `pbrlab tasks`.
@@ -79,15 +94,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !(args.timeout > 0.0 && args.timeout.is_finite()) {
         return Err(anyhow!("--timeout must be a positive number of seconds"));
     }
+    let variant = args
+        .variant_key
+        .as_deref()
+        .zip(args.student.as_deref())
+        .map(|(key, student)| Variant::of(key, student));
     let mut options = GradeOptions {
         tasks,
         implementation: args.implementation,
-        seed: args.seed,
-        hidden_seed: args.hidden_seed,
+        seed: variant.as_ref().map_or(args.seed, |v| v.seed),
+        hidden_seed: variant.as_ref().map(|v| v.hidden_seed).or(args.hidden_seed),
         timeout: Duration::from_secs_f64(args.timeout),
         memory_limit: args.memory_limit_mb << 20,
         renders: !args.no_renders,
-        report_dir: args.html.clone(),
+        // The render checks write the reference's picture beside the page: only in full.
+        report_dir: args
+            .html
+            .clone()
+            .filter(|_| args.feedback == Feedback::Full),
         credit: args.credit,
         ..GradeOptions::default()
     };
@@ -102,12 +126,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let calibration = calibration::repeat(&options, &launcher, runs)?;
         return emit(&calibration.text(), args.output.as_ref());
     }
-    let report = grade(&options, &launcher)?;
+    let mut report = grade(&options, &launcher)?;
+    report.variant = variant.map(|v| v.id);
+    let shown = feedback::redact(&report, args.feedback);
     if let Some(dir) = &args.html {
-        let page = report::write_html(&report, dir)?;
+        let page = report::write_html(&shown, dir)?;
         eprintln!("HTML report: {}", page.display());
     }
-    if args.implementation != ImplChoice::Reference && args.hidden_seed.is_none() {
+    if args.implementation != ImplChoice::Reference && options.hidden_seed.is_none() {
         // Losing the progress record must not lose the grade itself.
         if let Err(e) = history::save(&report) {
             eprintln!("warning: could not remember this grade: {e:#}");
@@ -119,7 +145,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         report::Detail::Compact
     };
     emit(
-        &report::render(&report, args.format, detail)?,
+        &report::render(&shown, args.format, detail)?,
         args.output.as_ref(),
     )
 }

@@ -2,6 +2,7 @@
 
 use crate::autograder::class::ClassRun;
 use crate::grade::credit::Credit;
+use crate::grade::feedback::Feedback;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -36,6 +37,22 @@ pub struct Args {
     /// that fails for reasons not the student's keeps the saved grade.
     #[arg(long)]
     pub regrade: bool,
+    /// How much of a failing case the feedback handed back shows (students/<name>.txt and
+    /// students/<name>/index.html): full, actual (input and the student's output, never
+    /// the expected answer) or none (which checks failed). The saved results stay in full.
+    #[arg(long, value_enum, default_value = "full")]
+    pub feedback: Feedback,
+    /// A course secret for per-student variants: each student's hidden cases and seeds
+    /// come from it and the submission's name, and each report records the variant, so a
+    /// regrade with the same key reproduces it. Replaces --hidden-seed.
+    #[arg(long, conflicts_with = "hidden_seed")]
+    pub variant_key: Option<String>,
+    /// A class list (CSV with a header, e.g. Canvas's gradebook export) that maps
+    /// submission names to the students of canvas.csv and moodle.csv: a submission matches
+    /// the row whose SIS Login ID, SIS User ID, Username, Login, Email address, Email, ID
+    /// number, ID or Student is its name.
+    #[arg(long)]
+    pub roster: Option<PathBuf>,
 }
 
 /// Runs `pbrlab grade-class`.
@@ -58,10 +75,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         credit: args.credit,
         progress: true,
         regrade: args.regrade,
+        feedback: args.feedback,
+        variant_key: args.variant_key,
+        roster: args.roster,
     }
     .run()?;
     eprintln!(
-        "{:.2} s per submission; results in {} (class.csv, summary.md, students/{})",
+        "{:.2} s per submission; results in {} (class.csv, canvas.csv, moodle.csv, summary.md, \
+         summary.html, students/{})",
         seconds,
         args.out.display(),
         if args.regrade {

@@ -8,6 +8,7 @@ use super::catalogue::{self, EstimatorSpec};
 use super::estimator;
 use super::expected::TaskData;
 use super::image_check::ImageStats;
+use super::output::fmt_num;
 use super::sampling::{self, HemisphereBins, SampleCounts, SamplingFailure, SamplingTarget};
 use super::stability;
 use super::stats::sidak;
@@ -359,9 +360,9 @@ fn from_raw(
 fn missing(name: &str, kind: CheckKind) -> CheckResult {
     let mut result = CheckResult::new(name, kind);
     result.total = 1;
-    result.fail(format!(
-        "{name}: no output came back from the worker (it stopped before this check)"
-    ));
+    let message =
+        format!("{name}: no output came back from the worker (it stopped before this check)");
+    result.fail(message.clone(), message);
     result.finish();
     result
 }
@@ -540,14 +541,19 @@ fn sampling_check(
         }
         Ok(Err(SamplingFailure::Domain(message))) => {
             result.summary = "a sample is not a valid direction".into();
-            result.fail(format!("{call}, {message}"));
+            // The sample the student's sampler returned, and what is wrong with it.
+            let message = format!("{call}, {message}");
+            result.fail(message.clone(), message);
         }
         Ok(Err(SamplingFailure::Distribution(histogram))) => {
             result.summary = format!(
                 "the samples do not follow the reference density (χ² = {:.1}, {} dof, p = {:.2e} < α = {:.1e})",
                 histogram.chi2, histogram.dof, histogram.p_value, alpha
             );
-            result.fail(format!("{call}: {}", histogram.worst_cell()));
+            result.fail(
+                format!("{call}: {}", histogram.worst_cell()),
+                format!("{call}: the samples do not follow the density of the pdf (χ² test)"),
+            );
             result.p_values.push(histogram.p_value);
             result.detail = Some(Detail::Sampling(*histogram));
         }
@@ -583,7 +589,18 @@ fn estimator_check(
         }
         Ok(Err(failure)) => {
             result.summary = "the estimator is biased or not finite".into();
-            result.fail(failure.message);
+            let shown = failure.stats.as_ref().map_or_else(
+                || failure.message.clone(),
+                |stats| {
+                    format!(
+                        "{}: your estimate {} ± {} (standard error) is off",
+                        spec.name,
+                        fmt_num(stats.student.mean),
+                        fmt_num(stats.student.std_error)
+                    )
+                },
+            );
+            result.fail(failure.message, shown);
             if let Some(stats) = failure.stats {
                 result.p_values.push(stats.p_value);
                 result.detail = Some(Detail::Estimator(stats));

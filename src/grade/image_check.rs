@@ -213,7 +213,8 @@ pub fn run(
     result.total = 1;
     result.alpha = ALPHA;
     match compare(name, student, reference) {
-        Err(message) => result.fail(message),
+        // The sizes, which the scene file gives.
+        Err(message) => result.fail(message.clone(), message),
         Ok((mut detail, z)) => {
             if let Some(dir) = report_dir {
                 match super::report::images::write_pictures(dir, name, student, reference, &z) {
@@ -223,7 +224,10 @@ pub fn run(
             }
             result.summary += &detail.describe();
             for violation in detail.violations() {
-                result.fail(violation);
+                result.fail(
+                    violation,
+                    format!("{name}: the render does not match the reference within noise"),
+                );
             }
             result.detail = Some(Detail::Image(detail));
         }

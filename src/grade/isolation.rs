@@ -8,7 +8,7 @@
 use super::checks::Raw;
 use super::sandbox::{Policy, Protections};
 use super::worker::{
-    Delivery, Job, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
+    Delivery, Job, PEAK_MARKER, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
 };
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
@@ -107,6 +107,9 @@ pub struct WorkerRun {
     pub step: Option<String>,
     /// The raw outputs that were ready, kept for a worker that dies later.
     pub finished_raw: Vec<Raw>,
+    /// The worker's peak resident memory (KiB) as it reported it after each step, with the
+    /// step: untrusted data for statistics, never a verdict.
+    pub peaks: Vec<(String, u64)>,
     /// The protections the worker reported in force before any student code ran.
     pub protections: Option<Protections>,
 }
@@ -120,6 +123,7 @@ impl WorkerRun {
             seconds: 0.0,
             step: None,
             finished_raw: Vec::new(),
+            peaks: Vec::new(),
             protections: None,
         }
     }
@@ -319,6 +323,12 @@ fn run_in(
                 } else if let Some(json) = marked(&line, RAW_MARKER, &nonce) {
                     seen.finished_raw
                         .extend(serde_json::from_str::<Raw>(json.trim()));
+                } else if let Some(kib) = marked(&line, PEAK_MARKER, &nonce) {
+                    if let (Some(step), Ok(kib)) = (&seen.step, kib.trim().parse::<u64>())
+                        && seen.peaks.len() < MAX_PEAKS
+                    {
+                        seen.peaks.push((step.clone(), kib));
+                    }
                 } else if seen.printed.len() < OUTPUT_LIMIT && !line.is_empty() {
                     seen.printed.push_str(&line);
                     seen.printed.push('\n');
@@ -351,6 +361,7 @@ fn run_in(
         printed,
         step,
         finished_raw,
+        peaks,
         mut protections,
     } = stdout
         .and_then(|rx| rx.recv_timeout(left()).ok())
@@ -407,6 +418,7 @@ fn run_in(
         seconds,
         step,
         finished_raw,
+        peaks,
         protections,
     }
 }
@@ -419,8 +431,12 @@ struct Seen {
     printed: String,
     step: Option<String>,
     finished_raw: Vec<Raw>,
+    peaks: Vec<(String, u64)>,
     protections: Option<Protections>,
 }
+
+/// The most peak-memory lines kept from one worker (one per step; a flood is not kept).
+const MAX_PEAKS: usize = 10_000;
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     if i >= s.len() {

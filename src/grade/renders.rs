@@ -205,7 +205,9 @@ pub fn judge(
         r.finish();
         r
     };
-    let fail = |message: String| failed(&|r: &mut CheckResult| r.fail(message.clone()));
+    // Each of these says what went wrong with the render, nothing of the reference's.
+    let fail =
+        |message: String| failed(&|r: &mut CheckResult| r.fail(message.clone(), message.clone()));
     let reference = match stored_reference(scene) {
         Ok(Some(r)) => r,
         Ok(None) => return fail(format!("no stored reference render of {scene}")),
@@ -225,10 +227,11 @@ pub fn judge(
     };
     let mut result = image_check::run(scene, stats, &reference, report_dir);
     if *rejected > 0 {
-        result.fail(format!(
+        let message = format!(
             "{scene}: {rejected} of {} samples were NaN, infinite or negative and had to be dropped",
             stats.width * stats.height * STUDENT_SPP as usize
-        ));
+        );
+        result.fail(message.clone(), message);
         result.finish();
     }
     result.seconds = rendered.seconds;

@@ -8,7 +8,7 @@ use super::credit::Credit;
 use super::estimator::EstimatorRun;
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
-use super::verdict::{GradeReport, TaskOutcome, TaskStatus};
+use super::verdict::{CheckResult, GradeReport, TaskOutcome, TaskStatus, Visibility};
 use super::worker::{ImplSpec, Job, JobKind, Record};
 use crate::implementation::ImplChoice;
 use crate::task_set::TaskSet;
@@ -551,6 +551,8 @@ pub fn outcome(
     } else {
         max_points
     };
+    let mut checks = checks;
+    attach_peaks(&mut checks, &run.peaks);
     TaskOutcome {
         task: task.name().into(),
         status,
@@ -559,6 +561,23 @@ pub fn outcome(
         checks,
         output: run.output,
         seconds: run.seconds,
+    }
+}
+
+/// Gives each visible check the peak memory its worker reported at its step (the stability
+/// check: at its last case). Hidden checks get none: the hidden cases' worker sends
+/// outputs only.
+fn attach_peaks(checks: &mut [CheckResult], peaks: &[(String, u64)]) {
+    for check in checks
+        .iter_mut()
+        .filter(|c| c.visibility == Visibility::Visible)
+    {
+        let prefix = format!("{}: ", check.name);
+        check.peak_memory_kib = peaks
+            .iter()
+            .filter(|(step, _)| *step == check.name || step.starts_with(&prefix))
+            .map(|(_, kib)| *kib)
+            .max();
     }
 }
 

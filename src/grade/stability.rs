@@ -25,9 +25,10 @@ pub fn judge<T>(cases: &[Case<T>], raw: &[Raw]) -> (CheckResult, bool) {
         });
         let Some(output) = output else {
             complete = false;
-            result.fail(format!(
+            let message = format!(
                 "{context}: no value came back from the worker (it stopped before this case)"
-            ));
+            );
+            result.fail(message.clone(), message);
             continue;
         };
         result.seconds += output.seconds;
@@ -35,11 +36,14 @@ pub fn judge<T>(cases: &[Case<T>], raw: &[Raw]) -> (CheckResult, bool) {
             Ok(value) => {
                 let verdict = case.judge(value);
                 if verdict != Verdict::Pass {
-                    result.fail(format!(
-                        "{context}: got {value} ({verdict}), expected {} ({})",
-                        case.expected_text(),
-                        case.guard
-                    ));
+                    result.fail(
+                        format!(
+                            "{context}: got {value} ({verdict}), expected {} ({})",
+                            case.expected_text(),
+                            case.guard
+                        ),
+                        format!("{context}: got {value} ({verdict})"),
+                    );
                 }
             }
             Err(p) => result.fail_panic(&context, p),

@@ -88,19 +88,22 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             });
         }
         if let Some(problem) = failure {
-            failing.push((simplicity(case), case, problem));
+            failing.push((simplicity(case), case, problem, got_of(outcome)));
         }
     }
     // The simplest failing input first: a worksheet case, then the shortest inputs (exact
     // boundary and special values print short), which is where a student starts debugging.
     failing.sort_by_key(|(key, ..)| *key);
-    for (_, case, problem) in &failing {
+    for (_, case, problem, got) in &failing {
         let note = case
             .note
             .as_deref()
             .map(|n| format!(" ({n})"))
             .unwrap_or_default();
-        result.fail(format!("{}: {problem}{note} [{}]", case.call, case.name));
+        result.fail(
+            format!("{}: {problem}{note} [{}]", case.call, case.name),
+            format!("{}: got {got} [{}]", case.call, case.name),
+        );
     }
     result.finish();
     result.worst = worst;
@@ -115,7 +118,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             fmt_num(factor)
         );
     }
-    if let (Some((_, case, problem)), Visibility::Visible) = (failing.first(), visibility) {
+    if let (Some((_, case, problem, _)), Visibility::Visible) = (failing.first(), visibility) {
         result.summary += &format!("; simplest failing input: {}: {problem}", case.call);
         if let Some(position) = super::catalogue::position(&case.call) {
             result.summary += &format!(" ({position})");
@@ -123,6 +126,14 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     }
     result.seconds = outputs.seconds;
     result
+}
+
+/// What the student's code returned, as a failure shows it.
+fn got_of(outcome: &Evaluated) -> String {
+    match outcome {
+        Ok(got) => got.to_string(),
+        Err(p) => p.describe(),
+    }
 }
 
 /// How simple a case is to debug (smaller is simpler): a case the worksheet or the errata

@@ -101,10 +101,12 @@ pub fn judge(
                     fmt_num(ratio)
                 );
                 if !(1.0 / UNIT_VARIANCE_RATIO..=UNIT_VARIANCE_RATIO).contains(&ratio) {
-                    result.fail(format!(
+                    // Both variances are the student's own: nothing expected in it.
+                    let message = format!(
                         "{name}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
                         fmt_num(ratio)
-                    ));
+                    );
+                    result.fail(message.clone(), message);
                 }
             }
             VarianceBound::BalanceBelowOther => {
@@ -116,16 +118,23 @@ pub fn judge(
                     fmt_num(limit)
                 );
                 if !(0.0..=limit * BALANCE_SLACK).contains(first) {
-                    result.fail(format!(
-                        "{name}: the balance heuristic's variance {} exceeds the bound {} (the other weighting's variance + μ²/2) {}× — weights that sum to one but are not p_a/(p_a + p_b)?",
-                        fmt_num(*first),
-                        fmt_num(limit),
-                        fmt_num(first / limit)
-                    ));
+                    result.fail(
+                        format!(
+                            "{name}: the balance heuristic's variance {} exceeds the bound {} (the other weighting's variance + μ²/2) {}× — weights that sum to one but are not p_a/(p_a + p_b)?",
+                            fmt_num(*first),
+                            fmt_num(limit),
+                            fmt_num(first / limit)
+                        ),
+                        format!(
+                            "{name}: the balance heuristic's variance {} is above Veach's bound",
+                            fmt_num(*first)
+                        ),
+                    );
                 }
             }
         },
-        Ok(Err(message)) => result.fail(message.clone()),
+        // What went wrong in the student's run.
+        Ok(Err(message)) => result.fail(message.clone(), message.clone()),
         Err(p) => result.fail_panic(name, p),
     }
     result.finish();

@@ -67,6 +67,11 @@ pub struct CheckResult {
     pub summary: String,
     /// Failing cases, each naming its input (at most [`MAX_MESSAGES`]).
     pub failures: Vec<String>,
+    /// The same failing cases with nothing of the expected answer in them (the input and
+    /// what the student's code returned, or what went wrong with it): what a course that
+    /// gives feedback at [`super::feedback::Feedback::Actual`] shows.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub shown: Vec<String>,
     /// Number of failing cases (may exceed `failures.len()`).
     pub failed: usize,
     /// Number of cases run.
@@ -87,6 +92,10 @@ pub struct CheckResult {
     pub detail: Option<Detail>,
     /// Wall time spent in the check, in seconds.
     pub seconds: f64,
+    /// The most resident memory the worker had held by the end of the check, in KiB, as
+    /// the worker reported it (statistics, never a verdict); none where it did not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub peak_memory_kib: Option<u64>,
 }
 
 /// The sum of points or weights, +0 when empty (`Iterator::sum` of no f64 is −0, which
@@ -129,6 +138,7 @@ impl CheckResult {
             weight: 1.0,
             summary: String::new(),
             failures: Vec::new(),
+            shown: Vec::new(),
             failed: 0,
             total: 0,
             worst: None,
@@ -139,14 +149,18 @@ impl CheckResult {
             todo_failed: 0,
             detail: None,
             seconds: 0.0,
+            peak_memory_kib: None,
         }
     }
 
-    /// Records one failing case.
-    pub fn fail(&mut self, message: String) {
+    /// Records one failing case: `message` in full (its input, what came back, what was
+    /// expected), and `shown`, the same case without anything of the expected answer (its
+    /// input and what came back).
+    pub fn fail(&mut self, message: String, shown: String) {
         self.failed += 1;
         if self.failures.len() < MAX_MESSAGES {
             self.failures.push(message);
+            self.shown.push(shown);
         }
     }
 
@@ -158,7 +172,9 @@ impl CheckResult {
                 self.todo_in.push(task.clone());
             }
         }
-        self.fail(format!("{context}: {}", panic.describe()));
+        // What the student's own code did: the same in full and shown.
+        let message = format!("{context}: {}", panic.describe());
+        self.fail(message.clone(), message);
     }
 
     /// Sets the verdict from the cases recorded: passed when none failed, not attempted when
@@ -292,6 +308,14 @@ pub struct GradeReport {
     /// set once (see [`crate::grade::sandbox`]); empty when no worker ran.
     #[serde(default)]
     pub sandbox: Vec<String>,
+    /// How much of a failing case this report shows ([`super::feedback`]).
+    #[serde(default)]
+    pub feedback: super::feedback::Feedback,
+    /// The variant graded, when the course gives each student their own hidden cases and
+    /// seeds (`--variant-key`): its public id, which a regrade with the same key and
+    /// student reproduces ([`super::variant`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub variant: Option<String>,
 }
 
 impl TaskOutcome {
@@ -327,6 +351,8 @@ impl GradeReport {
             max_score,
             seconds,
             sandbox: Vec::new(),
+            feedback: super::feedback::Feedback::default(),
+            variant: None,
         }
     }
 

@@ -32,6 +32,11 @@ pub const STEP_MARKER: &str = "PBRLAB-STEP";
 /// the grader judges them, and keeps them when the worker dies later.
 pub const RAW_MARKER: &str = "PBRLAB-RAW";
 
+/// The marker of the line a worker prints after each [`RAW_MARKER`] line, followed by the
+/// nonce and the most resident memory the worker has held so far, in KiB: the peak memory
+/// of the checks up to that one, for the class's item analysis (data, never a verdict).
+pub const PEAK_MARKER: &str = "PBRLAB-PEAK";
+
 /// The marker of the line a worker prints once it has its job and has entered its sandbox,
 /// before any student code runs, followed by the nonce and the [`sandbox::Protections`] in
 /// force as JSON: a worker that ends without it failed to start (the grader's fault, not the
@@ -232,7 +237,10 @@ pub fn serve<T: Tasks>(
                 format!("{STEP_MARKER} {nonce} {}", name.replace('\n', " "))
             }
             Progress::Raw(raw) => match serde_json::to_string(raw) {
-                Ok(json) => format!("{RAW_MARKER} {nonce} {json}"),
+                Ok(json) => {
+                    let peak = crate::render::peak_resident_kib().unwrap_or(0);
+                    format!("{RAW_MARKER} {nonce} {json}\n{PEAK_MARKER} {nonce} {peak}")
+                }
                 Err(_) => return,
             },
         };

@@ -357,7 +357,7 @@ fn every_correct_alternative_passes_the_hidden_cases_of_200_seeds() {
 fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_report() {
     use crate::support::patch::Patch;
     use pbrlab::grade::report::{Detail, gradescope, text, write_html};
-    use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
+    use pbrlab::grade::verdict::{GradeReport, TaskStatus};
     let task = TaskId::SmithG1;
     let mut patch = Patch::new(task);
     // Wrong only just above the horizon.
@@ -385,15 +385,7 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
         "student",
         1,
         false,
-        vec![TaskOutcome {
-            task: task.name().into(),
-            status,
-            points,
-            max_points: task.info().points as f64,
-            checks,
-            output: String::new(),
-            seconds: 0.0,
-        }],
+        vec![crate::support::outcome(task, (status, points, checks))],
         1.0,
     );
     let dir = tempfile::tempdir().unwrap();

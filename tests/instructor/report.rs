@@ -78,18 +78,13 @@ fn failing_report(dir: &Path) -> PathBuf {
     let inputs = inputs(1);
     let task = TaskId::CosineSample;
     let student = student_tasks_for(task, ImplChoice::Student, &[]);
-    let (status, points, checks) = grade(&sampler.patch.only(student), task, &inputs[&task]);
-    assert_eq!(status, TaskStatus::Failed);
+    let sampled = crate::support::outcome(
+        task,
+        grade(&sampler.patch.only(student), task, &inputs[&task]),
+    );
+    assert_eq!(sampled.status, TaskStatus::Failed);
     let tasks = vec![
-        TaskOutcome {
-            task: task.name().into(),
-            status,
-            points,
-            max_points: task.info().points as f64,
-            checks,
-            output: String::new(),
-            seconds: 0.0,
-        },
+        sampled,
         TaskOutcome {
             task: "scene: cornell".into(),
             status: TaskStatus::Failed,

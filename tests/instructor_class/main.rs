@@ -22,6 +22,25 @@ fn read_json(file: &Path) -> Value {
     serde_json::from_str(&text).unwrap()
 }
 
+/// Runs `pbrlab grade-class SUBMISSIONS --out OUT` with `args` (and `--regrade`), which
+/// must succeed; returns what it wrote on stderr.
+fn grade_class(submissions: &Path, out: &Path, args: &[&std::ffi::OsStr], regrade: bool) -> String {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_pbrlab"));
+    command
+        .arg("grade-class")
+        .arg(submissions)
+        .arg("--out")
+        .arg(out)
+        .args(args);
+    if regrade {
+        command.arg("--regrade");
+    }
+    let output = command.output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert!(output.status.success(), "{stderr}");
+    stderr
+}
+
 /// The processes whose command line mentions `needle`.
 fn processes_mentioning(needle: &str) -> Vec<String> {
     std::fs::read_dir("/proc")
@@ -207,21 +226,11 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     assert_ne!(wrong, right);
     std::fs::write(bob.join("smith_g1.rs"), &wrong).unwrap();
     let grade_class = |regrade: bool| {
-        let mut command = Command::new(env!("CARGO_BIN_EXE_pbrlab"));
-        command
-            .arg("grade-class")
-            .arg(&submissions)
-            .arg("--out")
-            .arg(&out)
-            .args(["--hidden-seed", "7"]);
-        if regrade {
-            command.arg("--regrade");
-        }
-        let output = command.output().unwrap();
-        assert!(
-            output.status.success(),
-            "{}",
-            String::from_utf8_lossy(&output.stderr)
+        grade_class(
+            &submissions,
+            &out,
+            &["--hidden-seed".as_ref(), "7".as_ref()],
+            regrade,
         );
         std::fs::read_to_string(out.join("changes.md")).unwrap_or_default()
     };
@@ -256,4 +265,105 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     assert!(changes.contains("- smith_g1: "), "{changes}");
     assert!(changes.contains(": failed → passed"), "{changes}");
     assert!(!changes.contains("## ada"), "{changes}");
+}
+
+/// A class graded with per-student variants, feedback at `actual` and a class list: each
+/// student gets a variant of their own, recorded in the result and reproduced by a regrade
+/// with the same key; the feedback handed back names no expected value; the gradebooks
+/// have Canvas's and Moodle's columns, a column per task and a total, the class list's
+/// students; summary.html has the item analysis.
+#[test]
+fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedback() {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    let solution = |task: &str| std::fs::read_to_string(repository().join(task)).unwrap();
+    for student in ["ada", "bob"] {
+        std::fs::create_dir_all(submissions.join(student)).unwrap();
+    }
+    std::fs::write(
+        submissions.join("ada/reflect.rs"),
+        solution("solutions/reflect.rs"),
+    )
+    .unwrap();
+    let wrong = solution("solutions/smith_g1.rs")
+        .replace("2.0 * c / (c + root)", "2.0 * c / (c + root + 0.01)");
+    std::fs::write(submissions.join("bob/smith_g1.rs"), wrong).unwrap();
+    let roster = dir.path().join("roster.csv");
+    std::fs::write(
+        &roster,
+        "Student,ID,SIS User ID,SIS Login ID,Section\n\
+         Points Possible,,,,\n\
+         \"Lovelace, Ada\",101,s101,ada,A\n",
+    )
+    .unwrap();
+    let args: Vec<&std::ffi::OsStr> = [
+        "--variant-key",
+        "course secret",
+        "--feedback",
+        "actual",
+        "--roster",
+    ]
+    .iter()
+    .map(|a| a.as_ref())
+    .chain([roster.as_os_str()])
+    .collect();
+    let grade_class = |regrade: bool| grade_class(&submissions, &out, &args, regrade);
+    let stderr = grade_class(false);
+    assert!(
+        stderr.contains("bob"),
+        "bob is not in the class list: {stderr}"
+    );
+    let variant = |student: &str| {
+        read_json(&out.join(format!("students/{student}.json")))["report"]["variant"].clone()
+    };
+    let (ada, bob) = (variant("ada"), variant("bob"));
+    assert!(
+        ada.is_string() && bob.is_string() && ada != bob,
+        "{ada} {bob}"
+    );
+    // The feedback handed back: the failing case's input and output, no expected value.
+    let feedback = std::fs::read_to_string(out.join("students/bob.txt")).unwrap();
+    assert!(
+        feedback.contains("smith_g1(") && feedback.contains(": got "),
+        "{feedback}"
+    );
+    assert!(!feedback.contains(", expected "), "{feedback}");
+    assert!(
+        feedback.contains(&format!("variant {}", bob.as_str().unwrap())),
+        "{feedback}"
+    );
+    // The saved result stays in full for the instructor.
+    let saved = std::fs::read_to_string(out.join("students/bob.json")).unwrap();
+    assert!(
+        saved.contains(", expected "),
+        "the instructor's record is in full"
+    );
+    let canvas = std::fs::read_to_string(out.join("canvas.csv")).unwrap();
+    let lines: Vec<&str> = canvas.lines().collect();
+    assert!(
+        lines[0].starts_with("Student,ID,SIS User ID,SIS Login ID,Section,pbrlab reflect,"),
+        "{canvas}"
+    );
+    assert!(lines[0].ends_with(",pbrlab total"), "{canvas}");
+    assert!(lines[1].starts_with("Points Possible,,,,,"), "{canvas}");
+    assert!(
+        lines[2].starts_with("\"Lovelace, Ada\",101,s101,ada,A,"),
+        "{canvas}"
+    );
+    assert!(lines[3].starts_with("bob,,,bob,,0,"), "{canvas}");
+    let moodle = std::fs::read_to_string(out.join("moodle.csv")).unwrap();
+    assert!(
+        moodle.starts_with("Username,Email address,pbrlab reflect,"),
+        "{moodle}"
+    );
+    let page = std::fs::read_to_string(out.join("summary.html")).unwrap();
+    assert!(page.contains("<svg") && page.contains("smith_g1"), "{page}");
+    // The same key regrades the same variants: nothing changes.
+    grade_class(true);
+    let changes = std::fs::read_to_string(out.join("changes.md")).unwrap();
+    assert!(
+        changes.contains("2 submissions regraded: 2 unchanged, 0 changed"),
+        "{changes}"
+    );
+    assert_eq!(variant("bob"), bob);
 }

@@ -12,6 +12,7 @@ mkdir -p "$root/results"
 "$source_dir/target/release/pbrlab" autograder run --service prairielearn \
     --config "$source_dir/pbrlab-autograder.json" \
     --submission "$root/student" \
+    --metadata "$root/data/data.json" \
     --results "$results"
 status=$?
 if [ ! -s "$results" ]; then

@@ -23,6 +23,10 @@ pub struct Results {
     pub stdout_visibility: &'static str,
     /// One entry per graded part.
     pub tests: Vec<Test>,
+    /// Stored with the result, not shown: the variant graded (`{"variant": id}`), so a
+    /// regrade reproduces it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub extra_data: Option<serde_json::Value>,
 }
 
 /// One test entry.
@@ -138,6 +142,7 @@ pub fn failed(reason: &str, seconds: f64) -> Results {
         visibility: "visible",
         stdout_visibility: "hidden",
         tests: Vec::new(),
+        extra_data: None,
     }
 }
 
@@ -149,16 +154,24 @@ pub fn gradescope(report: &GradeReport) -> Results {
         .filter(|t| t.max_points > 0.0)
         .flat_map(tests_of)
         .collect();
+    let mut output = format!(
+        "Graded {} tasks with pbrlab. Run `cargo run --release -- grade` locally for the same public checks.",
+        tests.iter().filter(|t| t.visibility == "visible").count()
+    );
+    for note in super::report_notes(report) {
+        output += &format!("\n{note}");
+    }
     Results {
         score: total(tests.iter().map(|t| t.score)),
         execution_time: report.seconds,
-        output: format!(
-            "Graded {} tasks with pbrlab. Run `cargo run --release -- grade` locally for the same public checks.",
-            tests.iter().filter(|t| t.visibility == "visible").count()
-        ),
+        output,
         visibility: "visible",
         stdout_visibility: "hidden",
         tests,
+        extra_data: report
+            .variant
+            .as_ref()
+            .map(|v| serde_json::json!({ "variant": v })),
     }
 }
 

@@ -195,6 +195,9 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
          <tr><th>task</th><th>status</th><th>points</th><th>time</th></tr>",
         report.score, report.max_score, report.implementation, report.seed, report.seconds
     );
+    for note in super::report_notes(report) {
+        s += &format!("<p class=\"muted\">{}</p>", escape(&note));
+    }
     for t in &report.tasks {
         let class = if t.status == TaskStatus::Passed {
             "passed"

@@ -10,7 +10,7 @@ mod text;
 
 pub use gradescope::gradescope;
 pub use html::write_html;
-pub use text::{COMPACT_LINES, Detail, WIDTH, details, text};
+pub use text::{COMPACT_LINES, Detail, WIDTH, details, report_notes, text};
 
 /// The output formats of `pbrlab grade --format`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]

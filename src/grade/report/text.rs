@@ -168,6 +168,9 @@ pub fn text(report: &GradeReport, detail: Detail) -> String {
     );
     let time = format!("{:.2}s", report.seconds);
     row(&mut s, "total", &report.implementation, &total, "", &time);
+    for line in report_notes(report).iter().flat_map(|n| wrap(n)) {
+        let _ = writeln!(s, "{line}");
+    }
     // The compact table names the protections only when one of them was not in force.
     for protections in &report.sandbox {
         if verbose || !crate::grade::sandbox::all_in_force(protections) {
@@ -213,6 +216,21 @@ pub fn text(report: &GradeReport, detail: Detail) -> String {
         );
     }
     s
+}
+
+/// The lines every report shows under its total: the variant graded and how much of a
+/// failing case the course shows.
+pub fn report_notes(report: &GradeReport) -> Vec<String> {
+    let mut notes = Vec::new();
+    if let Some(variant) = &report.variant {
+        notes.push(format!(
+            "variant {variant} (your own hidden cases and seeds)"
+        ));
+    }
+    if let Some(notice) = report.feedback.notice() {
+        notes.push(notice.to_string());
+    }
+    notes
 }
 
 /// What went wrong in a task, one line per message, hidden checks shown by count only.
@@ -308,7 +326,7 @@ mod tests {
         let mut check = CheckResult::new("a check", kind);
         check.total = 1;
         check.alpha = alpha;
-        check.fail("case 1 is off".into());
+        check.fail("case 1 is off".into(), "case 1".into());
         check.finish();
         TaskOutcome {
             task: "cosine_sample".into(),
@@ -329,9 +347,9 @@ mod tests {
             .map(|task| {
                 let mut check = CheckResult::new("values", CheckKind::Values);
                 check.total = lines;
-                check.fail(format!("{} long", "word ".repeat(40)));
+                check.fail(format!("{} long", "word ".repeat(40)), "long".into());
                 for case in 1..lines {
-                    check.fail(format!("case {case} is off"));
+                    check.fail(format!("case {case} is off"), format!("case {case}"));
                 }
                 check.finish();
                 TaskOutcome {

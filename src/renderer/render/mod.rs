@@ -6,15 +6,15 @@
 //! the same seed gives the same image bit for bit on any number of threads.
 
 pub mod checkpoint;
-mod cpu_time;
 mod film;
 mod image;
 pub mod output;
 pub mod raycast;
+mod usage;
 
-pub use cpu_time::process_cpu_seconds;
 pub use film::{Film, PixelSums};
 pub use image::Image;
+pub use usage::{peak_resident_kib, process_cpu_seconds};
 
 use crate::integrator;
 use crate::sampling::Sampler;

@@ -8,7 +8,7 @@ pub mod wrong_integrators;
 
 use pbrlab::grade::checks::{TaskInput, grade_task, score};
 use pbrlab::grade::runner::{GradeOptions, prepare};
-use pbrlab::grade::verdict::{CheckResult, TaskStatus};
+use pbrlab::grade::verdict::{CheckResult, TaskOutcome, TaskStatus};
 use pbrlab::worksheet::{TaskId, Tasks};
 use std::collections::BTreeMap;
 
@@ -49,6 +49,22 @@ pub fn grade(
     let checks = grade_task(t, task, input);
     let (status, points) = score(task, &checks);
     (status, points, checks)
+}
+
+/// `task`'s outcome in a report, from what [`grade`] returned.
+pub fn outcome(
+    task: TaskId,
+    (status, points, checks): (TaskStatus, f64, Vec<CheckResult>),
+) -> TaskOutcome {
+    TaskOutcome {
+        task: task.name().into(),
+        status,
+        points,
+        max_points: task.info().points as f64,
+        checks,
+        output: String::new(),
+        seconds: 0.0,
+    }
 }
 
 /// Tasks that have checks.
