@@ -71,6 +71,7 @@ pub mod grade;
 pub mod handout;
 pub mod implementation;
 pub mod panics;
+pub mod similarity;
 pub mod stability;
 
 pub use pbrlab_renderer::{

@@ -23,6 +23,10 @@ pub struct StudentChange {
     /// Why the saved grade was kept: the regrade failed for a reason that is not the
     /// student's (the new status was `not graded`).
     pub kept: Option<String>,
+    /// The variant graded before and after (none without `--variant-key`): a regrade with
+    /// another key, or none, grades other hidden cases.
+    #[serde(default)]
+    pub variant: (Option<String>, Option<String>),
 }
 
 /// What changed in one entry (a task or a scene) of a student's grade.
@@ -41,6 +45,7 @@ impl StudentChange {
     /// True when nothing about the grade changed (only timings may differ).
     pub fn unchanged(&self) -> bool {
         self.status.0 == self.status.1
+            && self.variant.0 == self.variant.1
             && self.entries.is_empty()
             && self.kept.is_none()
             && same_points(self.score.0, self.score.1)
@@ -116,6 +121,10 @@ pub fn compare(old: &StudentResult, new: &StudentResult) -> StudentChange {
         ),
         entries,
         kept,
+        variant: (
+            old.report.as_ref().and_then(|r| r.variant.clone()),
+            new.report.as_ref().and_then(|r| r.variant.clone()),
+        ),
     }
 }
 
@@ -176,6 +185,13 @@ pub fn report(changes: &[StudentChange]) -> String {
             + &old_new(points(change.score.0), points(change.score.1));
         if change.status.0 != change.status.1 {
             heading += &format!(" ({})", old_new(&change.status.0, &change.status.1));
+        }
+        if change.variant.0 != change.variant.1 && change.kept.is_none() {
+            let name = |v: &Option<String>| v.clone().unwrap_or_else(|| "none".into());
+            heading += &format!(
+                " (variant {}: another key grades other hidden cases)",
+                old_new(name(&change.variant.0), name(&change.variant.1))
+            );
         }
         let _ = writeln!(out, "{heading}");
         if let Some(reason) = &change.kept {

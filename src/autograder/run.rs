@@ -151,37 +151,7 @@ impl Submission<'_> {
         )?;
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("reading {} (the student's id)", path.display()))?;
-        let value: serde_json::Value = serde_json::from_str(&text)
-            .with_context(|| format!("reading {} (the student's id)", path.display()))?;
-        let id = |v: &serde_json::Value| match v {
-            serde_json::Value::String(s) if !s.is_empty() => Some(s.clone()),
-            serde_json::Value::Number(n) => Some(n.to_string()),
-            _ => None,
-        };
-        let found = match self.service {
-            Service::Gradescope => {
-                let mut ids: Vec<String> = value["users"]
-                    .as_array()
-                    .into_iter()
-                    .flatten()
-                    .filter_map(|u| id(&u["id"]).or_else(|| id(&u["email"])))
-                    .collect();
-                // A group's variant is the group's, whoever of it submits.
-                ids.sort();
-                (!ids.is_empty()).then(|| ids.join("+"))
-            }
-            Service::Prairielearn => id(&value["variant_seed"]),
-        };
-        found.with_context(|| {
-            format!(
-                "{} names no student ({})",
-                path.display(),
-                match self.service {
-                    Service::Gradescope => "users[].id",
-                    Service::Prairielearn => "variant_seed",
-                }
-            )
-        })
+        student_id(self.service, &text).with_context(|| format!("reading {}", path.display()))
     }
 
     fn results_json(&self, graded: &Graded, start: Instant) -> String {
@@ -225,6 +195,40 @@ impl Submission<'_> {
     }
 }
 
+/// The student's id in `service`'s description of a submission (`text`, JSON):
+/// Gradescope's `users[].id` (or email), the ids of a group joined in sorted order, so a
+/// group has one variant whoever of it submits; PrairieLearn's `variant_seed`.
+fn student_id(service: Service, text: &str) -> anyhow::Result<String> {
+    let value: serde_json::Value = serde_json::from_str(text).context("not JSON")?;
+    let id = |v: &serde_json::Value| match v {
+        serde_json::Value::String(s) if !s.is_empty() => Some(s.clone()),
+        serde_json::Value::Number(n) => Some(n.to_string()),
+        _ => None,
+    };
+    let found = match service {
+        Service::Gradescope => {
+            let mut ids: Vec<String> = value["users"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(|u| id(&u["id"]).or_else(|| id(&u["email"])))
+                .collect();
+            ids.sort();
+            (!ids.is_empty()).then(|| ids.join("+"))
+        }
+        Service::Prairielearn => id(&value["variant_seed"]),
+    };
+    found.with_context(|| {
+        format!(
+            "no student's id in it ({})",
+            match service {
+                Service::Gradescope => "users[].id",
+                Service::Prairielearn => "variant_seed",
+            }
+        )
+    })
+}
+
 /// The results of a submission that could not be graded, in `service`'s format.
 pub fn failed(service: Service, reason: &str, start: Instant) -> String {
     let json = match service {
@@ -251,4 +255,26 @@ fn write_once(written: &Mutex<bool>, results: &Path, json: &str) -> anyhow::Resu
         .with_context(|| format!("writing {}", results.display()))?;
     *done = true;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_student_of_a_submission_is_the_service_s_user_or_variant() {
+        let gradescope = r#"{"id": 123, "users": [{"email": "b@x.edu", "id": 72}, {"email": "a@x.edu", "id": 9}]}"#;
+        assert_eq!(student_id(Service::Gradescope, gradescope).unwrap(), "72+9");
+        let one = r#"{"users": [{"email": "a@x.edu", "id": null}]}"#;
+        assert_eq!(student_id(Service::Gradescope, one).unwrap(), "a@x.edu");
+        let pl = r#"{"params": {}, "variant_seed": 418803}"#;
+        assert_eq!(student_id(Service::Prairielearn, pl).unwrap(), "418803");
+        for (service, text) in [
+            (Service::Gradescope, r#"{"users": []}"#),
+            (Service::Prairielearn, r#"{"params": {}}"#),
+            (Service::Gradescope, "not json"),
+        ] {
+            assert!(student_id(service, text).is_err(), "{text}");
+        }
+    }
 }

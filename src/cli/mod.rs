@@ -15,6 +15,7 @@ mod power;
 pub mod rebuild;
 mod render;
 mod reset;
+mod similarity;
 mod stability;
 pub mod student_side;
 mod tasks;
@@ -43,6 +44,10 @@ pub enum Command {
     /// Grade every submission in a folder (a subfolder or zip per student): CSV and summary.
     #[command(hide = !cfg!(feature = "solutions"))]
     GradeClass(grade_class::Args),
+    /// Compare a class's exercise files for copied code, per task, on this machine (an
+    /// HTML page with the matched regions side by side).
+    #[command(hide = !cfg!(feature = "solutions"))]
+    Similarity(similarity::Args),
     /// Write a Gradescope or PrairieLearn autograder package.
     #[command(hide = !cfg!(feature = "solutions"))]
     Autograder(autograder::Args),
@@ -130,6 +135,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Hint(args)) => hint::run(args),
         Some(Command::Grade(args)) => grade::run(args),
         Some(Command::GradeClass(args)) => grade_class::run(args),
+        Some(Command::Similarity(args)) => similarity::run(args),
         Some(Command::Autograder(args)) => autograder::run(args),
         Some(Command::Watch(args)) => watch::run(args),
         Some(Command::Reset(args)) => reset::run(args),

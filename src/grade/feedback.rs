@@ -47,8 +47,9 @@ impl Feedback {
 
 /// `report` as a student sees it at `level`: at [`Feedback::Full`] unchanged; otherwise
 /// every check keeps its name, kind, verdict, credit and counts, and loses its worst case,
-/// its statistics and pictures, and its messages, which are replaced as [`redact_check`]
-/// says.
+/// its statistics and pictures, and its messages: a summary from its counts replaces its
+/// own, and at [`Feedback::Actual`] a visible check's failures are its student-safe lines
+/// ([`CheckResult::shown`]).
 pub fn redact(report: &GradeReport, level: Feedback) -> GradeReport {
     let mut shown = report.clone();
     shown.feedback = level;

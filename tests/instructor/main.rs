@@ -39,6 +39,7 @@ mod render_scenes;
 mod render_variance;
 mod renders;
 mod report;
+mod similarity;
 mod stability;
 mod trust;
 mod variants;
