@@ -114,8 +114,8 @@ impl TaskInput {
     }
 }
 
-/// The name of the values check on the stored cases.
-const VALUES: &str = "values";
+/// The name of the values check on the stored (public) cases.
+pub const VALUES: &str = "values";
 
 /// The name of the values check on the hidden cases.
 const HIDDEN_VALUES: &str = "values (hidden cases)";

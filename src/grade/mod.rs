@@ -47,6 +47,7 @@ pub mod runner;
 pub mod sampling;
 pub mod sandbox;
 pub mod scene_gate;
+pub mod shrink;
 pub mod stability;
 pub mod stats;
 pub mod student_build;

@@ -1,13 +1,17 @@
 //! Grading a set of tasks: load the expected data, decide which implementation grades which
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
+use super::call::Call;
 use super::checks::{
-    EstimateOutputs, Raw, TaskInput, WorkerInput, judge_finished, judge_task, score,
+    EstimateOutputs, Raw, TaskInput, VALUES, ValueCalls, WorkerInput, judge_finished, judge_task,
+    score,
 };
 use super::credit::Credit;
 use super::estimator::EstimatorRun;
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
+use super::shrink;
+use super::values::ValueOutputs;
 use super::verdict::{CheckResult, GradeReport, TaskOutcome, TaskStatus, Visibility};
 use super::worker::{ImplSpec, Job, JobKind, Record};
 use crate::implementation::ImplChoice;
@@ -297,10 +301,25 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
         if *reference_estimators && let Some(reference) = runs.next() {
             join_reference(&mut run, reference);
         }
-        outcomes.push((
-            task.name().to_string(),
-            outcome(*task, input, run, options.credit),
-        ));
+        let public = public_values(&run);
+        let mut task_outcome = outcome(*task, input, run, options.credit);
+        if cfg!(feature = "solutions")
+            && let (Some(outputs), Some(data)) = (public, &input.data)
+            && let Some(check) = task_outcome
+                .checks
+                .iter_mut()
+                .find(|c| c.name == outputs.check && !c.passed)
+        {
+            let student = |calls: &[Call]| shrink_run(launcher, options, &attempted, *task, calls);
+            shrink::attach(
+                &data.values,
+                &outputs,
+                check,
+                crate::implementation::reference(),
+                student,
+            );
+        }
+        outcomes.push((task.name().to_string(), task_outcome));
     }
     outcomes.sort_by_key(|(name, _)| TaskId::parse(name).map_or(usize::MAX, |t| t as usize));
     let mut tasks: Vec<TaskOutcome> = outcomes.into_iter().map(|(_, o)| o).collect();
@@ -561,6 +580,61 @@ pub fn outcome(
         checks,
         output: run.output,
         seconds: run.seconds,
+    }
+}
+
+/// The outputs of the public values check in a worker's `run`, if it finished.
+fn public_values(run: &isolation::WorkerRun) -> Option<ValueOutputs> {
+    let raw = match &run.outcome {
+        Ok(Record::Outputs { raw }) => raw,
+        _ => return None,
+    };
+    raw.iter().find_map(|r| match r {
+        Raw::Values(v) if v.check == VALUES => Some(v.clone()),
+        _ => None,
+    })
+}
+
+/// The student's outputs of `calls` of `task` (simpler inputs of a failing public case), in
+/// a worker of their own like every job; none when it does not finish.
+fn shrink_run(
+    launcher: &Launcher,
+    options: &GradeOptions,
+    attempted: &[TaskId],
+    task: TaskId,
+    calls: &[Call],
+) -> Vec<super::values::Evaluated> {
+    let Ok(implementation) = spec_for(task, options, attempted) else {
+        return Vec::new();
+    };
+    let job = Job {
+        nonce: isolation::nonce(),
+        implementation,
+        kind: JobKind::Grade {
+            task: task.name().into(),
+            input: WorkerInput {
+                values: vec![ValueCalls {
+                    check: "values (shrinking)".into(),
+                    calls: calls.to_vec(),
+                }],
+                sampling: Vec::new(),
+                seed: options.seed,
+                values_only: true,
+                estimators_only: false,
+            },
+        },
+        memory_limit: options.memory_limit,
+    };
+    let run = run_all(launcher, vec![job], options).into_iter().next();
+    match run.map(|r| r.outcome) {
+        Some(Ok(Record::Outputs { raw })) => raw
+            .into_iter()
+            .find_map(|r| match r {
+                Raw::Values(v) => Some(v.outputs),
+                _ => None,
+            })
+            .unwrap_or_default(),
+        _ => Vec::new(),
     }
 }
 

@@ -138,7 +138,7 @@ fn got_of(outcome: &Evaluated) -> String {
 
 /// How simple a case is to debug (smaller is simpler): a case the worksheet or the errata
 /// name before a drawn one, then the shorter its printed inputs.
-fn simplicity(case: &ValueCase) -> (bool, usize) {
+pub(crate) fn simplicity(case: &ValueCase) -> (bool, usize) {
     let drawn = case.name.starts_with("random") || case.name.starts_with("hidden");
     (drawn, case.call.to_string().len())
 }

@@ -354,7 +354,7 @@ fn every_correct_alternative_passes_the_hidden_cases_of_200_seeds() {
 }
 
 #[test]
-fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_report() {
+fn a_failing_value_check_names_its_simplest_and_its_shrunk_failing_input_in_every_report() {
     use crate::support::patch::Patch;
     use pbrlab::grade::report::{Detail, gradescope, text, write_html};
     use pbrlab::grade::verdict::{GradeReport, TaskStatus};
@@ -369,8 +369,28 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
         }
     });
     let inputs = crate::support::inputs(1);
-    let (status, points, checks) = crate::support::grade(&patch, task, &inputs[&task]);
+    let (status, points, mut checks) = crate::support::grade(&patch, task, &inputs[&task]);
     assert_eq!(status, TaskStatus::Failed);
+    // Shrunk as the grader shrinks it, with the student's outputs computed here.
+    let cases = &inputs[&task].data.as_ref().expect("stored cases").values;
+    let calls: Vec<Call> = cases.iter().map(|c| c.call.clone()).collect();
+    let outputs = pbrlab::grade::values::evaluate("values", &calls, &patch);
+    let values = checks.iter_mut().find(|c| c.name == "values").unwrap();
+    let before = values.summary.clone();
+    pbrlab::grade::shrink::attach(cases, &outputs, values, &Reference, |calls: &[Call]| {
+        pbrlab::grade::values::evaluate("values", calls, &patch).outputs
+    });
+    assert!(
+        values.summary.contains("; shrunk to: smith_g1("),
+        "{before}\n{}",
+        values.summary
+    );
+    // Still in the band next to the horizon, and still failing there.
+    assert!(
+        values.summary.contains("from the horizon"),
+        "{}",
+        values.summary
+    );
     let values = checks
         .iter()
         .find(|c| c.name == "values")
@@ -405,6 +425,7 @@ fn a_failing_value_check_names_its_simplest_failing_input_and_boundary_in_every_
     ] {
         assert!(
             shown.contains("simplest failing input: smith_g1(")
+                && shown.contains("shrunk to: smith_g1(")
                 && shown.contains("from the horizon"),
             "the {name} report does not name the simplest failing input:\n{shown}"
         );

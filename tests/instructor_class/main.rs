@@ -329,6 +329,10 @@ fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedba
     );
     assert!(!feedback.contains(", expected "), "{feedback}");
     assert!(
+        feedback.contains("shrunk to smith_g1("),
+        "shrunk in the runner: {feedback}"
+    );
+    assert!(
         feedback.contains(&format!("variant {}", bob.as_str().unwrap())),
         "{feedback}"
     );
