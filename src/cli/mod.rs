@@ -128,7 +128,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
     // student's code as it is now. (A render or a study of student code hands itself to
     // `pbrlab-student`, rebuilding both first: `student_side`.)
     if matches!(cli.command, Some(Command::Grade(_) | Command::Stability(_))) {
-        rebuild::ensure_worker()?;
+        rebuild::ensure_student_binaries()?;
     }
     match cli.command {
         Some(Command::Tasks(args)) => tasks::run(args),

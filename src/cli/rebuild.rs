@@ -11,7 +11,7 @@
 //! error in an exercise file never stops `pbrlab` itself from starting.
 
 use crate::grade::isolation::{STUDENT_BINARY, beside, worker_beside};
-use crate::grade::student_build::{BuildRecord, StudentBuild};
+use crate::grade::student_build::{BuildRecord, StudentBuild, same_path};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
@@ -41,14 +41,14 @@ pub struct StudentBinaries {
 /// The binaries beside the running one that run the student's code, rebuilt first when
 /// one is older than an exercise file or than the running binary, missing, or built from
 /// another folder.
-pub fn ensure_worker() -> anyhow::Result<StudentBinaries> {
+pub fn ensure_student_binaries() -> anyhow::Result<StudentBinaries> {
     let exe = std::env::current_exe().context("locating this binary")?;
-    ensure_worker_beside(&exe)
+    ensure_student_binaries_beside(&exe)
 }
 
-/// [`ensure_worker`] for the binaries beside `exe` (a test names the `pbrlab` it runs),
+/// [`ensure_student_binaries`] for the binaries beside `exe` (a test names the `pbrlab` it runs),
 /// once per process: later calls return the first one's answer.
-pub fn ensure_worker_beside(exe: &Path) -> anyhow::Result<StudentBinaries> {
+pub fn ensure_student_binaries_beside(exe: &Path) -> anyhow::Result<StudentBinaries> {
     static ENSURED: std::sync::OnceLock<Result<StudentBinaries, String>> =
         std::sync::OnceLock::new();
     ENSURED
@@ -68,8 +68,7 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
     let modified = |file: &Path| std::fs::metadata(file).and_then(|m| m.modified()).ok();
     // A build from another folder (`grade-class` builds each submission here) is not the
     // student's.
-    let elsewhere = BuildRecord::of(worker)
-        .is_some_and(|r| r.exercises.canonicalize().ok() != exercises.canonicalize().ok());
+    let elsewhere = BuildRecord::of(worker).is_some_and(|r| !same_path(&r.exercises, &exercises));
     // Cargo links `pbrlab` and the two binaries in one build in any order, so a binary a
     // few milliseconds older than `pbrlab` may be current: the stamp of the last rebuild
     // says which `pbrlab` cargo found them current for.
@@ -108,7 +107,7 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
     .run()
     .context("fix the error above and run the command again")?;
     anyhow::ensure!(
-        same_file(&record.worker, worker),
+        same_path(&record.worker, worker),
         "cargo built the worker at {}, not beside this binary ({}): run pbrlab from the \
          target folder cargo builds into",
         record.worker.display(),
@@ -161,8 +160,4 @@ impl Confirmed {
             );
         }
     }
-}
-
-fn same_file(a: &Path, b: &Path) -> bool {
-    a.canonicalize().ok() == b.canonicalize().ok()
 }

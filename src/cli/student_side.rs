@@ -39,7 +39,7 @@ impl WorkerExit {
 /// In `pbrlab`: runs this process's command line in `pbrlab-student` (rebuilt first when
 /// stale), which prints to the same terminal.
 pub fn delegate() -> anyhow::Result<()> {
-    let student = super::rebuild::ensure_worker()?.student;
+    let student = super::rebuild::ensure_student_binaries()?.student;
     let status = std::process::Command::new(&student)
         .env(super::INVOCATION, super::invocation())
         .args(std::env::args_os().skip(1))

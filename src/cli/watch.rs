@@ -39,7 +39,7 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
 }
 
 /// Regrades in a new process of this binary, whose first step rebuilds the worker with the
-/// student's crate (`rebuild::ensure_worker`: cargo's progress and the compiler's messages shown as they
+/// student's crate (`rebuild::ensure_student_binaries`: cargo's progress and the compiler's messages shown as they
 /// come, a task that does not compile built from its stub); the grader's own table is the
 /// output, and watching goes on whatever happens.
 fn regrade(exe: &Path, tasks: &[String], verbose: bool) -> anyhow::Result<()> {

@@ -328,7 +328,7 @@ impl StudentBuild<'_> {
         // The one folder the build script compiles. Unset, it compiles exercises/ as it is:
         // plain cargo builds and this one then agree, and neither rebuilds after the other.
         let compiled = if stubbed { stubs } else { self.exercises };
-        if same_folder(compiled, &self.root.join("exercises")) {
+        if same_path(compiled, &self.root.join("exercises")) {
             cargo.env_remove("PBRLAB_EXERCISES");
         } else {
             cargo.env("PBRLAB_EXERCISES", compiled);
@@ -489,7 +489,9 @@ fn cargo_progress(line: &str) -> Option<(u64, u64)> {
     Some((done.parse().ok()?, total.parse().ok()?))
 }
 
-fn same_folder(a: &Path, b: &Path) -> bool {
+/// Whether `a` and `b` name the same file or folder (compared after resolving links;
+/// as written when either does not resolve).
+pub(crate) fn same_path(a: &Path, b: &Path) -> bool {
     match (a.canonicalize(), b.canonicalize()) {
         (Ok(a), Ok(b)) => a == b,
         _ => a == b,
@@ -524,7 +526,7 @@ fn task_of(file: &str, exercises: &Path) -> Option<TaskId> {
     } else {
         parent.to_path_buf()
     };
-    same_folder(&parent, exercises).then_some(task)
+    same_path(&parent, exercises).then_some(task)
 }
 
 /// Every file a diagnostic points at, its children's included.

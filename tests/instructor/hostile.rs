@@ -560,7 +560,8 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
 fn only_the_worker_binaries_link_the_student_crate() {
     let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
     let grader = std::fs::read(pbrlab).expect("the grader's binary");
-    let built = pbrlab::cli::rebuild::ensure_worker_beside(pbrlab).expect("the worker binaries");
+    let built =
+        pbrlab::cli::rebuild::ensure_student_binaries_beside(pbrlab).expect("the worker binaries");
     // The stubs' functions keep their symbols (`_ZN16pbrlab_exercises7reflect…`).
     for binary in [built.worker, built.student] {
         let bytes = std::fs::read(&binary).expect("a worker binary");

@@ -25,7 +25,8 @@ pub fn install() {
 /// (built by the first test that asks, as `pbrlab` builds it before running student code).
 pub fn worker() -> std::path::PathBuf {
     let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
-    let built = pbrlab::cli::rebuild::ensure_worker_beside(pbrlab).expect("building pbrlab-worker");
+    let built = pbrlab::cli::rebuild::ensure_student_binaries_beside(pbrlab)
+        .expect("building pbrlab-worker");
     built.worker
 }
 
