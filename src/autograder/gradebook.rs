@@ -204,16 +204,19 @@ pub fn canvas(
 }
 
 /// `moodle.csv`: `Username` and `Email address` (from `roster`, else the submission
-/// name as username), a column per entry in points, and `pbrlab total (%)`.
+/// name as username), then every entry and the total in percent of its points (a new
+/// Moodle grade item's maximum is 100).
 pub fn moodle(
     results: &[StudentResult],
     entries: &[String],
     roster: &Roster,
 ) -> anyhow::Result<String> {
     let mut header = vec!["Username".to_string(), "Email address".to_string()];
-    header.extend(entries.iter().map(|e| column(e)));
+    header.extend(entries.iter().map(|e| column(&format!("{e} (%)"))));
     header.push(column("total (%)"));
     let mut rows = vec![header];
+    let percent =
+        |points: Option<f64>, of: f64| points.map(|p| if of > 0.0 { 100.0 * p / of } else { 0.0 });
     let available = total(entries.iter().map(|e| possible(results, e)));
     for r in results {
         let name = r.student.as_str();
@@ -226,14 +229,12 @@ pub fn moodle(
             .find_map(|c| roster.cell(name, c))
             .unwrap_or_default();
         let mut row = vec![username.to_string(), email.to_string()];
-        row.extend(entries.iter().map(|e| cell(points(r, e))));
-        row.push(cell(score(r).map(|s| {
-            if available > 0.0 {
-                100.0 * s / available
-            } else {
-                0.0
-            }
-        })));
+        row.extend(
+            entries
+                .iter()
+                .map(|e| cell(percent(points(r, e), possible(results, e)))),
+        );
+        row.push(cell(percent(score(r), available)));
         rows.push(row);
     }
     write(rows)
@@ -324,7 +325,8 @@ mod tests {
         let roster = Roster::parse("Username,Email address\nann,ann@example.edu\n").unwrap();
         let rows = parse(&moodle(&class(), &["reflect".to_string()], &roster).unwrap());
         assert_eq!(rows[0][..2], ["Username", "Email address"]);
-        assert_eq!(rows[1], ["ann", "ann@example.edu", "2.5", "50"]);
+        assert_eq!(rows[0][2], "pbrlab reflect (%)");
+        assert_eq!(rows[1], ["ann", "ann@example.edu", "50", "50"]);
         assert_eq!(rows[2], ["bo", "", "0", "0"]);
         assert_eq!(rows[3], ["cy", "", "", ""]);
     }

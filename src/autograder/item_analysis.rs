@@ -4,13 +4,14 @@
 //! end of the check). `summary.md` has it as a table, `summary.html` as the same table with
 //! a bar per check.
 //!
-//! A submission counts for a check when it ran it: a task not attempted, waiting for
-//! another, or stopped by a compile error does not. The failing input of a values or
+//! A submission counts for a check when it ran it: a task not attempted or waiting for
+//! another does not, and one stopped by a compile error has no checks to count. The failing input of a values or
 //! stability check is the case's input (the part of its student-safe line before what the
 //! code returned); for the other kinds the check's name is its configuration (`sampling:
 //! cosine_sample …`, `estimator: furnace …`), so its most common failing input is the
 //! check itself.
 
+use crate::grade::report::escape;
 use crate::grade::verdict::{CheckKind, CheckResult, GradeReport, TaskStatus};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -148,13 +149,6 @@ pub fn markdown(rows: &[CheckRow]) -> String {
         );
     }
     s
-}
-
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 /// `summary.html`: `head` (the class's counts, as text) and the checks with a bar each for

@@ -143,7 +143,8 @@ impl Submission<'_> {
 
     /// The student's id in the service's description of the submission: Gradescope's
     /// `users[0].id` (with the other users of a group submission), PrairieLearn's
-    /// `variant_seed` (PrairieLearn gives a grader no user, and its variant is per student).
+    /// `variant_seed` (PrairieLearn gives a grader no user; its variant is per student
+    /// when the question sets `singleVariant`, else each new variant draws anew).
     fn student(&self) -> anyhow::Result<String> {
         let path = self.metadata.context(
             "the package grades per-student variants, and the service gave no description \

@@ -69,7 +69,7 @@ pub struct Args {
     pub feedback: Feedback,
     /// Grade one student's variant: their own hidden cases and seeds, drawn from this
     /// course secret and `--student` (as `grade-class --variant-key` does).
-    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "repeat"])]
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "seed", "repeat"])]
     pub variant_key: Option<String>,
     /// The student whose variant `--variant-key` grades (the submission's name in a
     /// class run).

@@ -362,7 +362,7 @@ fn missing(name: &str, kind: CheckKind) -> CheckResult {
     result.total = 1;
     let message =
         format!("{name}: no output came back from the worker (it stopped before this check)");
-    result.fail(message.clone(), message);
+    result.fail_own(message);
     result.finish();
     result
 }
@@ -543,7 +543,7 @@ fn sampling_check(
             result.summary = "a sample is not a valid direction".into();
             // The sample the student's sampler returned, and what is wrong with it.
             let message = format!("{call}, {message}");
-            result.fail(message.clone(), message);
+            result.fail_own(message);
         }
         Ok(Err(SamplingFailure::Distribution(histogram))) => {
             result.summary = format!(

@@ -137,6 +137,25 @@ impl Param {
         boundary.abs().max(1.0)
     }
 
+    /// Whether the contract admits `value` as a draw of this parameter may land on it:
+    /// inside the range, and either exactly on a boundary the contract defines or no closer
+    /// to a boundary than the [`Param::resolution`] (where correct code may round either
+    /// way). Special values are admitted.
+    pub fn admits(&self, value: f64) -> bool {
+        if !(value.is_finite() && (self.lo..=self.hi).contains(&value)) {
+            return false;
+        }
+        self.special.contains(&value)
+            || self.boundaries.iter().all(|b| {
+                let distance = (value - b.at).abs() / self.scale(b.at);
+                if distance == 0.0 {
+                    self.on_boundaries
+                } else {
+                    distance >= self.resolution
+                }
+            })
+    }
+
     /// The boundaries and special values inside the range, where a draw may land exactly.
     pub fn exact_values(&self) -> impl Iterator<Item = f64> + '_ {
         self.boundaries
@@ -470,6 +489,28 @@ impl Draw<'_> {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn the_contract_admits_what_it_defines_and_nothing_it_leaves_open() {
+        const EDGE: &[Boundary] = &[Boundary {
+            at: 0.0,
+            what: "the edge",
+        }];
+        let p = Param::new("f", "x", &["x"], |_| None, -1.0, 1.0)
+            .boundaries(EDGE)
+            .special(&[0.5])
+            .resolution(1e-5);
+        assert!(p.admits(0.0) && p.admits(0.5) && p.admits(1e-4) && p.admits(-1.0));
+        assert!(
+            !p.admits(1e-6),
+            "nearer the edge than correct code resolves"
+        );
+        assert!(!p.admits(1.5) && !p.admits(f64::NAN));
+        assert!(
+            !p.open().admits(0.0),
+            "an open boundary is not a value of the contract"
+        );
+    }
     use super::*;
 
     const P: Param = Param {

@@ -11,7 +11,7 @@
 //! any level: their checks carry only a count. The instructor's own records (a class run's
 //! `students/<name>.json`) stay in full.
 
-use super::verdict::{CheckResult, GradeReport, Visibility};
+use super::verdict::{CheckResult, GradeReport, TaskStatus, Visibility};
 use serde::{Deserialize, Serialize};
 
 /// How much of a failing case a student-visible report shows.
@@ -60,6 +60,12 @@ pub fn redact(report: &GradeReport, level: Feedback) -> GradeReport {
         for check in &mut task.checks {
             redact_check(check, level);
         }
+        // Where a crash happened names the step, a public case's input: not at `none`.
+        if let (Feedback::None, TaskStatus::Crashed { reason }) = (level, &mut task.status)
+            && let Some((what, _)) = reason.split_once(", while running ")
+        {
+            *reason = what.to_string();
+        }
     }
     shown
 }
@@ -70,6 +76,8 @@ pub fn redact(report: &GradeReport, level: Feedback) -> GradeReport {
 fn redact_check(check: &mut CheckResult, level: Feedback) {
     check.summary = if check.passed {
         format!("{}/{} cases pass", check.total, check.total)
+    } else if check.not_attempted {
+        "not attempted".into()
     } else if check.total > 1 {
         format!("{}/{} cases fail", check.failed, check.total)
     } else {
@@ -80,6 +88,10 @@ fn redact_check(check: &mut CheckResult, level: Feedback) {
         _ => Vec::new(),
     };
     check.shown.clear();
+    check.shrunk = match level {
+        Feedback::Actual => check.shrunk.take().map(|(_, shown)| (shown.clone(), shown)),
+        _ => None,
+    };
     check.worst = None;
     check.p_values.clear();
     check.detail = None;

@@ -214,7 +214,7 @@ pub fn run(
     result.alpha = ALPHA;
     match compare(name, student, reference) {
         // The sizes, which the scene file gives.
-        Err(message) => result.fail(message.clone(), message),
+        Err(message) => result.fail_own(message),
         Ok((mut detail, z)) => {
             if let Some(dir) = report_dir {
                 match super::report::images::write_pictures(dir, name, student, reference, &z) {

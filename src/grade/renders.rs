@@ -206,8 +206,7 @@ pub fn judge(
         r
     };
     // Each of these says what went wrong with the render, nothing of the reference's.
-    let fail =
-        |message: String| failed(&|r: &mut CheckResult| r.fail(message.clone(), message.clone()));
+    let fail = |message: String| failed(&|r: &mut CheckResult| r.fail_own(message.clone()));
     let reference = match stored_reference(scene) {
         Ok(Some(r)) => r,
         Ok(None) => return fail(format!("no stored reference render of {scene}")),
@@ -231,7 +230,7 @@ pub fn judge(
             "{scene}: {rejected} of {} samples were NaN, infinite or negative and had to be dropped",
             stats.width * stats.height * STUDENT_SPP as usize
         );
-        result.fail(message.clone(), message);
+        result.fail_own(message);
         result.finish();
     }
     result.seconds = rendered.seconds;

@@ -317,6 +317,7 @@ pub fn grade(options: &GradeOptions, launcher: &Launcher) -> anyhow::Result<Grad
                 check,
                 crate::implementation::reference(),
                 student,
+                SHRINK_BUDGET,
             );
         }
         outcomes.push((task.name().to_string(), task_outcome));
@@ -595,6 +596,12 @@ fn public_values(run: &isolation::WorkerRun) -> Option<ValueOutputs> {
     })
 }
 
+/// The most time shrinking one task's failing case may take, and each of its worker jobs
+/// (closed-form calls, microseconds each: a job that takes longer ends the shrinking), so
+/// a package's submission stays within the service's time limit.
+const SHRINK_BUDGET: Duration = Duration::from_secs(4);
+const SHRINK_JOB_TIMEOUT: Duration = Duration::from_secs(2);
+
 /// The student's outputs of `calls` of `task` (simpler inputs of a failing public case), in
 /// a worker of their own like every job; none when it does not finish.
 fn shrink_run(
@@ -625,7 +632,11 @@ fn shrink_run(
         },
         memory_limit: options.memory_limit,
     };
-    let run = run_all(launcher, vec![job], options).into_iter().next();
+    let options = GradeOptions {
+        timeout: options.timeout.min(SHRINK_JOB_TIMEOUT),
+        ..options.clone()
+    };
+    let run = run_all(launcher, vec![job], &options).into_iter().next();
     match run.map(|r| r.outcome) {
         Some(Ok(Record::Outputs { raw })) => raw
             .into_iter()

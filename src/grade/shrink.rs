@@ -4,10 +4,11 @@
 //! alpha=0.5)`), as property-based testing tools do with a failing example.
 //!
 //! A step changes one input: a number to one with fewer significant digits (0, ±1, the
-//! number rounded), or a unit direction to one at a rounder polar angle θ or azimuth φ
-//! (which keeps the direction unit, and keeps θ, so a bug in a band next to the horizon
-//! still shows). A candidate must lie inside the task's declared domain
-//! ([`super::domain`]), and its expected output is the reference's, with the tolerance of
+//! number rounded), or a unit direction to one at a rounder azimuth φ with its polar angle
+//! θ kept (so a bug in a band next to the horizon still shows), or at a rounder θ or an
+//! axis. A candidate must be admitted by the task's declared domain ([`super::domain`]:
+//! inside the range, not on an open boundary, not nearer a boundary than correct code can
+//! resolve), and its expected output is the reference's, with the tolerance of
 //! the case it came from widened by the candidate's own rounding spread, as every drawn case
 //! is ([`super::catalogue::evaluate`]): a shrunk case fails by a clear margin or is not
 //! taken. Only public cases are shrunk (the inputs shown are derived from an input the
@@ -17,10 +18,11 @@
 use super::call::Call;
 use super::case::{Rule, ValueCase};
 use super::catalogue::{self, CaseInput};
-use super::values::{Evaluated, ValueOutputs, simplicity};
-use super::verdict::{CheckResult, MAX_MESSAGES};
+use super::values::{Evaluated, ValueOutputs, got_of, simplicity};
+use super::verdict::CheckResult;
 use crate::worksheet::Tasks;
 use serde_json::Value;
+use std::time::{Duration, Instant};
 
 /// At most this many rounds of candidates.
 const ROUNDS: usize = 6;
@@ -224,11 +226,13 @@ fn inside_domain(call: &Call) -> bool {
 /// The simplest case that still fails, reached from `case` (a failing public case judged
 /// by value) by rounds of one-step simplifications: `student` returns the student's outputs
 /// of a round's calls, in order (fewer when its worker stopped: the rest count as passing).
-/// `None` when `case` is not judged by value or no simpler input fails.
+/// `None` when `case` is not judged by value or no simpler input fails. No round starts
+/// after `deadline`.
 pub fn shrink(
     case: &ValueCase,
     reference: &impl Tasks,
     mut student: impl FnMut(&[Call]) -> Vec<Evaluated>,
+    deadline: Instant,
 ) -> Option<Shrunk> {
     if !matches!(case.rule, Rule::Close(_)) {
         return None;
@@ -236,6 +240,9 @@ pub fn shrink(
     let mut best: Option<Shrunk> = None;
     let mut current = case.clone();
     for _ in 0..ROUNDS {
+        if Instant::now() >= deadline {
+            break;
+        }
         let here = complexity(&current.call);
         let mut calls: Vec<Call> = candidates(&current.call)
             .into_iter()
@@ -281,15 +288,17 @@ pub fn shrink(
 }
 
 /// Shrinks the simplest failing case of a values check (`check`, judged from `outputs` of
-/// `cases`) with [`shrink`], and names what it found first in the check's summary and
-/// failures: `shrunk to: CALL: got …, expected …`. Nothing changes when no case failed by
-/// value (a panic is simple already) or nothing simpler fails. The points stay as graded.
+/// `cases`) with [`shrink`] within `budget`, and names what it found in the check's summary
+/// and [`CheckResult::shrunk`]: `shrunk to: CALL: got …, expected …`. Nothing changes when
+/// no case failed by value (a panic is simple already) or nothing simpler fails. The
+/// points and the counts of graded cases stay as graded.
 pub fn attach(
     cases: &[ValueCase],
     outputs: &ValueOutputs,
     check: &mut CheckResult,
     reference: &impl Tasks,
     student: impl FnMut(&[Call]) -> Vec<Evaluated>,
+    budget: Duration,
 ) {
     let simplest = cases
         .iter()
@@ -297,7 +306,8 @@ pub fn attach(
         .filter(|(case, got)| matches!(got, Ok(out) if case.judge(out).is_err()))
         .map(|(case, _)| case)
         .min_by_key(|case| simplicity(case));
-    let Some(shrunk) = simplest.and_then(|case| shrink(case, reference, student)) else {
+    let deadline = Instant::now() + budget;
+    let Some(shrunk) = simplest.and_then(|case| shrink(case, reference, student, deadline)) else {
         return;
     };
     let Shrunk { case, got, problem } = shrunk;
@@ -305,20 +315,15 @@ pub fn attach(
     if let Some(position) = catalogue::position(&case.call) {
         check.summary += &format!(" ({position})");
     }
-    let got = match &got {
-        Ok(out) => out.to_string(),
-        Err(p) => p.describe(),
-    };
-    check.failures.insert(
-        0,
+    check.shrunk = Some((
         format!("shrunk to {}: {problem} [{}]", case.call, case.name),
-    );
-    check.shown.insert(
-        0,
-        format!("shrunk to {}: got {got} [{}]", case.call, case.name),
-    );
-    check.failures.truncate(MAX_MESSAGES);
-    check.shown.truncate(MAX_MESSAGES);
+        format!(
+            "shrunk to {}: got {} [{}]",
+            case.call,
+            got_of(&got),
+            case.name
+        ),
+    ));
 }
 
 #[cfg(test)]

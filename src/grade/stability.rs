@@ -28,7 +28,7 @@ pub fn judge<T>(cases: &[Case<T>], raw: &[Raw]) -> (CheckResult, bool) {
             let message = format!(
                 "{context}: no value came back from the worker (it stopped before this case)"
             );
-            result.fail(message.clone(), message);
+            result.fail_own(message);
             continue;
         };
         result.seconds += output.seconds;

@@ -129,7 +129,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
 }
 
 /// What the student's code returned, as a failure shows it.
-fn got_of(outcome: &Evaluated) -> String {
+pub(crate) fn got_of(outcome: &Evaluated) -> String {
     match outcome {
         Ok(got) => got.to_string(),
         Err(p) => p.describe(),

@@ -106,7 +106,7 @@ pub fn judge(
                         "{name}: the variance changes {}× with the unit of length (a weight that adds a pdf per unit area to one per solid angle?)",
                         fmt_num(ratio)
                     );
-                    result.fail(message.clone(), message);
+                    result.fail_own(message);
                 }
             }
             VarianceBound::BalanceBelowOther => {
@@ -134,7 +134,7 @@ pub fn judge(
             }
         },
         // What went wrong in the student's run.
-        Ok(Err(message)) => result.fail(message.clone(), message.clone()),
+        Ok(Err(message)) => result.fail_own(message.clone()),
         Err(p) => result.fail_panic(name, p),
     }
     result.finish();

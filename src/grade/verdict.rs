@@ -72,6 +72,11 @@ pub struct CheckResult {
     /// gives feedback at [`super::feedback::Feedback::Actual`] shows.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub shown: Vec<String>,
+    /// A failing case shrunk to a simpler input that still fails ([`super::shrink`]): the
+    /// message in full and as [`CheckResult::shown`] words it. Not a graded case: it is
+    /// counted in neither `failed` nor `total`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shrunk: Option<(String, String)>,
     /// Number of failing cases (may exceed `failures.len()`).
     pub failed: usize,
     /// Number of cases run.
@@ -139,6 +144,7 @@ impl CheckResult {
             summary: String::new(),
             failures: Vec::new(),
             shown: Vec::new(),
+            shrunk: None,
             failed: 0,
             total: 0,
             worst: None,
@@ -164,6 +170,12 @@ impl CheckResult {
         }
     }
 
+    /// Records one failing case whose message holds nothing of the expected answer (what
+    /// the student's code did, or that no output came back): shown as it is.
+    pub fn fail_own(&mut self, message: String) {
+        self.fail(message.clone(), message);
+    }
+
     /// Records a case that panicked; `context` names the case.
     pub fn fail_panic(&mut self, context: &str, panic: &Panic) {
         if let Some(task) = &panic.todo_in {
@@ -173,8 +185,7 @@ impl CheckResult {
             }
         }
         // What the student's own code did: the same in full and shown.
-        let message = format!("{context}: {}", panic.describe());
-        self.fail(message.clone(), message);
+        self.fail_own(format!("{context}: {}", panic.describe()));
     }
 
     /// Sets the verdict from the cases recorded: passed when none failed, not attempted when

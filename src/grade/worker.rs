@@ -237,10 +237,12 @@ pub fn serve<T: Tasks>(
                 format!("{STEP_MARKER} {nonce} {}", name.replace('\n', " "))
             }
             Progress::Raw(raw) => match serde_json::to_string(raw) {
-                Ok(json) => {
-                    let peak = crate::render::peak_resident_kib().unwrap_or(0);
-                    format!("{RAW_MARKER} {nonce} {json}\n{PEAK_MARKER} {nonce} {peak}")
-                }
+                Ok(json) => match crate::render::peak_resident_kib() {
+                    Some(peak) => {
+                        format!("{RAW_MARKER} {nonce} {json}\n{PEAK_MARKER} {nonce} {peak}")
+                    }
+                    None => format!("{RAW_MARKER} {nonce} {json}"),
+                },
                 Err(_) => return,
             },
         };

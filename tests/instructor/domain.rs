@@ -377,9 +377,14 @@ fn a_failing_value_check_names_its_simplest_and_its_shrunk_failing_input_in_ever
     let outputs = pbrlab::grade::values::evaluate("values", &calls, &patch);
     let values = checks.iter_mut().find(|c| c.name == "values").unwrap();
     let before = values.summary.clone();
-    pbrlab::grade::shrink::attach(cases, &outputs, values, &Reference, |calls: &[Call]| {
-        pbrlab::grade::values::evaluate("values", calls, &patch).outputs
-    });
+    pbrlab::grade::shrink::attach(
+        cases,
+        &outputs,
+        values,
+        &Reference,
+        |calls: &[Call]| pbrlab::grade::values::evaluate("values", calls, &patch).outputs,
+        std::time::Duration::from_secs(60),
+    );
     assert!(
         values.summary.contains("; shrunk to: smith_g1("),
         "{before}\n{}",

@@ -357,7 +357,7 @@ fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedba
     assert!(lines[3].starts_with("bob,,,bob,,0,"), "{canvas}");
     let moodle = std::fs::read_to_string(out.join("moodle.csv")).unwrap();
     assert!(
-        moodle.starts_with("Username,Email address,pbrlab reflect,"),
+        moodle.starts_with("Username,Email address,pbrlab reflect (%),"),
         "{moodle}"
     );
     let page = std::fs::read_to_string(out.join("summary.html")).unwrap();

@@ -13,7 +13,8 @@ use anyhow::Context;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-fn escape(s: &str) -> String {
+/// `s` safe inside HTML text and double-quoted attributes.
+pub(crate) fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -125,6 +126,9 @@ fn check_html(c: &CheckResult, pictures: &Pictures<'_>) -> String {
             c.failed, c.total
         );
         return s;
+    }
+    if let Some((shrunk, _)) = &c.shrunk {
+        let _ = write!(s, "<pre>{}</pre>", escape(shrunk));
     }
     if !c.failures.is_empty() {
         let mut text = c.failures.join("\n");

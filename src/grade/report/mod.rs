@@ -9,6 +9,7 @@ mod svg;
 mod text;
 
 pub use gradescope::gradescope;
+pub(crate) use html::escape;
 pub use html::write_html;
 pub use text::{COMPACT_LINES, Detail, WIDTH, details, report_notes, text};
 

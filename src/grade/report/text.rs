@@ -289,7 +289,7 @@ pub fn details(t: &TaskOutcome) -> String {
                 continue;
             }
             let _ = writeln!(s, "  ✗ {}: {}", c.name, c.summary);
-            for m in &c.failures {
+            for m in c.shrunk.iter().map(|(full, _)| full).chain(&c.failures) {
                 let _ = writeln!(s, "      {m}");
             }
             if c.failed > c.failures.len() {
