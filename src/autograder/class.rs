@@ -4,7 +4,7 @@
 //! to the student's scratch folder; grading runs in parallel beside the next builds, each
 //! worker sandboxed as always. Each student's result is written as soon as it is known
 //! (`students/<id>.json`), so an interrupted run continues where it stopped; the class
-//! table (`class.csv`) and summary (`summary.md`) are written from all results at the end.
+//! table (`class.csv`), the gradebooks and the summaries are written from all results at the end.
 
 use super::gradebook::{self, Roster};
 use super::item_analysis;
@@ -535,7 +535,7 @@ impl ClassRun<'_> {
         crate::atomic_file::write(&file, json.as_bytes())
     }
 
-    /// Writes `class.csv` and `summary.md` from the saved results of `all`.
+    /// Writes the class-wide files ([`TABLES`]) from the saved results of `all`.
     fn write_tables(&self, all: &[(String, PathBuf)]) -> anyhow::Result<()> {
         let mut results = Vec::new();
         for (student, _) in all {
@@ -549,19 +549,18 @@ impl ClassRun<'_> {
         let entries = entry_names(&results);
         crate::atomic_file::write(
             &self.out.join("class.csv"),
-            csv(&results, &entries).as_bytes(),
+            csv(&results, &entries)?.as_bytes(),
         )?;
+        // summary.md and summary.html: the class's counts, then the item analysis per check.
+        let head = entry_summary(&results, &entries);
+        let rows = check_rows(&results, &entries);
         crate::atomic_file::write(
             &self.out.join("summary.md"),
-            summary(&results, &entries).as_bytes(),
+            (head.clone() + &item_analysis::markdown(&rows)).as_bytes(),
         )?;
         crate::atomic_file::write(
             &self.out.join("summary.html"),
-            item_analysis::html(
-                &entry_summary(&results, &entries),
-                &check_rows(&results, &entries),
-            )
-            .as_bytes(),
+            item_analysis::html(&head, &rows).as_bytes(),
         )?;
         let roster = match &self.roster {
             Some(path) => Roster::load(path)?,
@@ -607,49 +606,30 @@ fn entry_names(results: &[StudentResult]) -> Vec<String> {
     names
 }
 
-fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
-/// One row per student: points per entry, total, status.
-pub fn csv(results: &[StudentResult], entries: &[String]) -> String {
-    let mut s = String::from("student");
-    for e in entries {
-        s += &format!(",{}", csv_field(e));
-    }
-    s += ",total,max,status\n";
+/// `class.csv`: one row per student, points per entry, total, max and status.
+pub fn csv(results: &[StudentResult], entries: &[String]) -> anyhow::Result<String> {
+    let mut header = vec!["student".to_string()];
+    header.extend(entries.iter().cloned());
+    header.extend(["total", "max", "status"].map(String::from));
+    let mut rows = vec![header];
     for r in results {
-        s += &csv_field(&r.student);
-        for e in entries {
+        let mut row = vec![r.student.clone()];
+        row.extend(entries.iter().map(|e| {
             let points = r
                 .report
                 .as_ref()
                 .and_then(|rep| rep.task(e))
                 .map(|t| t.points);
-            s += &format!(",{}", format_points(points.unwrap_or(0.0)));
-        }
+            format_points(points.unwrap_or(0.0))
+        }));
         let (total, max) = r
             .report
             .as_ref()
             .map_or((0.0, 0.0), |rep| (rep.score, rep.max_score));
-        s += &format!(
-            ",{},{},{}\n",
-            format_points(total),
-            format_points(max),
-            csv_field(&r.status)
-        );
+        row.extend([format_points(total), format_points(max), r.status.clone()]);
+        rows.push(row);
     }
-    s
-}
-
-/// `summary.md`: the class's counts and [`entry_summary`], then the item analysis per check
-/// ([`item_analysis`]).
-pub fn summary(results: &[StudentResult], entries: &[String]) -> String {
-    entry_summary(results, entries) + &item_analysis::markdown(&check_rows(results, entries))
+    gradebook::write(rows)
 }
 
 /// The item analysis of the graded `results`.
@@ -794,7 +774,7 @@ mod tests {
             },
         ];
         let entries = entry_names(&results);
-        let table = csv(&results, &entries);
+        let table = csv(&results, &entries).unwrap();
         let lines: Vec<&str> = table.lines().collect();
         assert_eq!(lines.len(), 3);
         assert!(
@@ -805,7 +785,7 @@ mod tests {
         assert!(lines[1].starts_with("\"ann, b\",5,"), "{}", lines[1]);
         assert!(lines[1].ends_with(",5,10,graded"), "{}", lines[1]);
         assert!(lines[2].ends_with(",0,0,not graded"), "{}", lines[2]);
-        let text = summary(&results, &entries);
+        let text = entry_summary(&results, &entries);
         assert!(
             text.contains("| reflect | 5.00 | 5 | 1 | 0 | 0 |"),
             "{text}"

@@ -142,8 +142,9 @@ fn possible(results: &[StudentResult], entry: &str) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The CSV of `rows` (a header first).
-fn write(rows: Vec<Vec<String>>) -> anyhow::Result<String> {
+/// The CSV of `rows` (a header first), quoted as RFC 4180 has it: every file a class run
+/// writes for other programs goes through here.
+pub(crate) fn write(rows: Vec<Vec<String>>) -> anyhow::Result<String> {
     let mut out = csv::Writer::from_writer(Vec::new());
     for row in rows {
         out.write_record(&row)?;
