@@ -105,8 +105,8 @@ fn every_wrong_implementation_fails_its_own_task_and_only_it() {
 /// surface or brighter than 1, a sky, a point light off the origin or on the shading point,
 /// MIS weights that only the variance tells apart, bounce weights above 1, a survival
 /// probability other than 1/2, a path that escapes after a bounce, a depth below 1,
-/// coloured albedos, surfaces without a bounce, glossy surfaces, a light facing away, the
-/// bounce `mis` hands on, rays off the origin, small step bounds) fail the estimator of
+/// coloured albedos, surfaces without a bounce, glossy and rough surfaces, a light facing
+/// away, the bounce `mis` hands on, rays off the origin, small step bounds) fail the estimator of
 /// that configuration, and the message names it.
 #[test]
 fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
@@ -175,6 +175,14 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
         (
             "one tentative collision more than allowed",
             "at most 2 steps",
+        ),
+        (
+            "a walk out of steps reported as an absorption",
+            "at most 5 steps",
+        ),
+        (
+            "the Lambertian density in the BSDF sample's weight",
+            "rough conductor",
         ),
     ];
     let catalogue = wrong::catalogue();

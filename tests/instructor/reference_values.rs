@@ -1073,3 +1073,23 @@ fn brdf_check_rejects_the_worksheet_custom_brdf() {
     let nan = |_: Vec3, _: Vec3| f32::NAN;
     assert!(!R.brdf_check(&nan, &mut s, 16).is_plausible(1.0));
 }
+
+/// The stored light the estimators' rough conductors reflect is the reference's: each
+/// quadrature of the reference's BSDF, at the hit its estimator shades, agrees with the
+/// constant the grader builds its answer from.
+#[test]
+fn the_stored_quadratures_are_the_references() {
+    let all = pbrlab::grade::catalogue::stored_quadratures(&R);
+    assert!(all.len() >= 4, "{all:?}");
+    let wrong: Vec<String> = all
+        .iter()
+        .filter(|q| ((q.computed - q.stored) / q.computed).abs().max_element() >= 1e-6)
+        .map(|q| {
+            format!(
+                "{}: the reference reflects DVec3::new({:.9}, {:.9}, {:.9}), stored {:?}",
+                q.what, q.computed.x, q.computed.y, q.computed.z, q.stored
+            )
+        })
+        .collect();
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

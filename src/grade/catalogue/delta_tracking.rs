@@ -234,6 +234,38 @@ fn flight<'a, T: Tasks>(
     })
 }
 
+/// A walk along the unit segment through σa = σs = 0.5 under a majorant of 4 (three of
+/// four tentative collisions null) allowed `steps` tentative collisions: the probability
+/// that it ends in `event` (scatter or absorb) moves by 2 to 10 % with each step more or
+/// less in the range of small bounds.
+fn capped<T: Tasks>(t: &T, event: Event, steps: u32) -> EstimatorSpec<'_> {
+    let medium = Slabs {
+        slabs: vec![(f32::INFINITY, coefficients(0.5, 0.5))],
+        majorant: 4.0,
+    };
+    let kind = if event == Event::Absorb {
+        "absorb"
+    } else {
+        "scatter"
+    };
+    EstimatorSpec {
+        name: format!(
+            "P({kind}), homogeneous σa = σs = 0.5, majorant 4, at most {steps} steps"
+        ),
+        analytic: capped_collision(0.5, 1.0, 4.0, 1.0, steps),
+        samples: 100_000,
+        estimate: flight(
+            t,
+            medium,
+            Segment {
+                max_steps: steps,
+                ..UNIT
+            },
+            event,
+        ),
+    }
+}
+
 pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
     // M1: homogeneous σa = σs = 0.5 under a majorant of 2 (null collisions).
     let m1 = Slabs {
@@ -382,6 +414,8 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
                 Event::Scatter,
             ),
         },
+        capped(t, Event::Scatter, 3),
+        capped(t, Event::Absorb, 5),
         along(
             "P(absorb), two slabs of σt = 1 under a majorant of 1, at most 1 step",
             &m6,

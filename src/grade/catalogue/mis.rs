@@ -20,6 +20,7 @@
 
 use super::phong_floor::PhongSurface;
 use super::polygon::projected_solid_angle;
+use super::rough_conductor::{self, RoughConductor, StoredQuadrature};
 use super::{CHANNEL_WEIGHTS, EstimatorSpec, path_trace, yaml_rgb};
 use crate::geometry::{Hit, Ray};
 use crate::grade::power::Declared;
@@ -219,6 +220,31 @@ const BROAD_PHONG: PhongSurface = PhongSurface {
     ks: DVec3::new(0.6, 0.5, 0.8),
     exponent: 2.0,
 };
+/// The surface of [`Floor::Rough`]: isotropic GGX, α = 0.3, a coloured `f0`.
+const ROUGH: RoughConductor = RoughConductor {
+    alpha_x: 0.3,
+    alpha_y: 0.3,
+    f0: DVec3::new(0.6, 0.8, 0.95),
+};
+/// `[over the errata's square, over the hemisphere]`: `∫ f cos θi dωi` per channel of
+/// [`ROUGH`] towards [`Floor::wo`], by quadrature of the reference
+/// ([`stored_quadratures`]).
+const ROUGH_REFLECTED: [DVec3; 2] = [
+    DVec3::new(0.171_355_603, 0.228_283_561, 0.270_979_526),
+    DVec3::new(0.508_260_473, 0.676_346_419, 0.802_410_866),
+];
+/// The surface of [`Floor::RoughGrazing`]: anisotropic GGX, rough across the plane of
+/// incidence and smoother along it.
+const ROUGH_GRAZING: RoughConductor = RoughConductor {
+    alpha_x: 0.5,
+    alpha_y: 0.2,
+    f0: DVec3::new(0.95, 0.9, 0.7),
+};
+/// [`ROUGH_REFLECTED`] of [`ROUGH_GRAZING`] towards its [`Floor::wo`].
+const ROUGH_GRAZING_REFLECTED: [DVec3; 2] = [
+    DVec3::new(0.200_067_022, 0.189_748_656, 0.148_475_202),
+    DVec3::new(0.757_937_075, 0.719_126_039, 0.563_881_940),
+];
 /// Reflectance of [`Floor::Mirror`].
 const MIRROR: DVec3 = DVec3::new(0.9, 0.6, 0.3);
 /// Index of refraction of [`Floor::Glass`].
@@ -236,6 +262,13 @@ enum Floor {
     /// about half of its BSDF samples fall below the horizon and fail, while its light
     /// samples still count.
     BroadPhong,
+    /// The rough conductor [`ROUGH`], shaded from the direction that reflects onto the
+    /// centre of the errata's square (as [`Floor::Mirror`]).
+    Rough,
+    /// The anisotropic rough conductor [`ROUGH_GRAZING`] shaded from 70° on the far side
+    /// of the light (as [`Floor::BroadPhong`]): many of its half-vector samples reflect
+    /// below the horizon and fail.
+    RoughGrazing,
     /// A perfect mirror of reflectance [`MIRROR`], shaded from the direction that
     /// reflects onto the centre of the errata's square.
     Mirror,
@@ -252,6 +285,8 @@ impl Floor {
             Floor::Diffuse => format!("{{diffuse: {{albedo: {ALBEDO}}}}}"),
             Floor::Phong => PHONG.yaml(),
             Floor::BroadPhong => BROAD_PHONG.yaml(),
+            Floor::Rough => ROUGH.yaml(),
+            Floor::RoughGrazing => ROUGH_GRAZING.yaml(),
             Floor::Mirror => format!("{{mirror: {{reflectance: {}}}}}", yaml_rgb(MIRROR)),
             Floor::Glass => format!("{{dielectric: {{ior: {GLASS_IOR}}}}}"),
         }
@@ -260,9 +295,9 @@ impl Floor {
     /// The direction `mis` is asked about (away from the floor).
     fn wo(self) -> Vec3 {
         match self {
-            Floor::Mirror | Floor::Glass => Vec3::new(-1.0, 0.0, 1.0).normalize(),
+            Floor::Mirror | Floor::Glass | Floor::Rough => Vec3::new(-1.0, 0.0, 1.0).normalize(),
             Floor::Diffuse | Floor::Phong => Vec3::Z,
-            Floor::BroadPhong => Vec3::new(-0.939_692_6, 0.0, 0.342_020_14),
+            Floor::BroadPhong | Floor::RoughGrazing => Vec3::new(-0.939_692_6, 0.0, 0.342_020_14),
         }
     }
 
@@ -272,6 +307,10 @@ impl Floor {
             Floor::Diffuse => "",
             Floor::Phong => " on a glossy phong floor",
             Floor::BroadPhong => " on a broad phong lobe seen at 70° (bsdf samples fail)",
+            Floor::Rough => " on a rough conductor floor",
+            Floor::RoughGrazing => {
+                " on an anisotropic rough conductor seen at 70° (bsdf samples fail)"
+            }
             Floor::Mirror => " on a mirror floor",
             Floor::Glass => " on a glass floor",
         }
@@ -280,38 +319,42 @@ impl Floor {
     /// The exact direct light at the shading point of `lighting` towards [`Floor::wo`],
     /// channels weighted by [`CHANNEL_WEIGHTS`]. Defined for the lightings each floor is
     /// graded under: every one for [`Floor::Diffuse`], the errata's open square and the
-    /// sky for the Phong floors, the open square for [`Floor::Mirror`] and [`Floor::Glass`].
+    /// sky for the Phong and rough floors, the open square for [`Floor::Mirror`] and
+    /// [`Floor::Glass`].
     fn analytic(self, lighting: Lighting) -> f64 {
-        match self {
-            Floor::Diffuse => lighting.analytic(),
+        // `∫ f cos θ dω` per channel over the errata's square and over the hemisphere.
+        let [square, albedo] = match self {
+            Floor::Diffuse => return lighting.analytic(),
             Floor::Phong | Floor::BroadPhong => {
-                assert!(matches!(lighting, Lighting::Open | Lighting::Sky));
                 let surface = if self == Floor::Phong {
                     PHONG
                 } else {
                     BROAD_PHONG
                 };
                 let wo = self.wo().as_dvec3();
-                let (light, radiance) = lighting.square();
-                // `∫ f cos θ dω` over the square and over the hemisphere; the sky lights all
-                // of it but the square.
-                let square = surface.over(wo, light);
-                let sky = if lighting.has_sky() { SKY } else { 0.0 };
-                CHANNEL_WEIGHTS.dot(square * (radiance - sky) + surface.albedo(wo) * sky)
+                [surface.over(wo, lighting.square().0), surface.albedo(wo)]
             }
+            Floor::Rough => ROUGH_REFLECTED,
+            Floor::RoughGrazing => ROUGH_GRAZING_REFLECTED,
             Floor::Mirror => {
                 assert_eq!(lighting, Lighting::Open);
                 // The mirror direction of `wo` is (1, 0, 1)/√2: it meets the square at its
                 // centre (1, 0, 1), from below, where it emits radiance 1.
-                CHANNEL_WEIGHTS.dot(MIRROR * lighting.square().1)
+                return CHANNEL_WEIGHTS.dot(MIRROR * lighting.square().1);
             }
             Floor::Glass => {
                 assert_eq!(lighting, Lighting::Open);
                 // The reflection at 45° sees the square as the mirror does; its probability
                 // is the exact Fresnel reflectance, and its weight 1.
-                fresnel_dielectric_f64(0.5f64.sqrt(), 1.0, GLASS_IOR) * lighting.square().1
+                return fresnel_dielectric_f64(0.5f64.sqrt(), 1.0, GLASS_IOR)
+                    * lighting.square().1;
             }
-        }
+        };
+        // The sky lights all of the hemisphere but the square.
+        assert!(matches!(lighting, Lighting::Open | Lighting::Sky));
+        let radiance = lighting.square().1;
+        let sky = if lighting.has_sky() { SKY } else { 0.0 };
+        CHANNEL_WEIGHTS.dot(square * (radiance - sky) + albedo * sky)
     }
 }
 
@@ -493,15 +536,24 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         spec_on(t, Floor::Phong, Sky, 1.0, Heuristic::Light),
         spec_on(t, Floor::BroadPhong, Open, 1.0, Heuristic::Power),
         spec_on(t, Floor::BroadPhong, Sky, 1.0, Heuristic::Light),
+        spec_on(t, Floor::Rough, Open, 1.0, Heuristic::Power),
+        spec_on(t, Floor::Rough, Open, 1.0, Heuristic::Bsdf),
+        spec_on(t, Floor::Rough, Sky, 1.0, Heuristic::Balance),
+        spec_on(t, Floor::RoughGrazing, Open, 1.0, Heuristic::Light),
+        spec_on(t, Floor::RoughGrazing, Sky, 1.0, Heuristic::Power),
         spec_on(t, Floor::Mirror, Open, 1.0, Heuristic::Power),
         spec_on(t, Floor::Mirror, Open, 1.0, Heuristic::Light),
         spec_on(t, Floor::Glass, Open, 1.0, Heuristic::Power),
+        // Light weights alone in a furnace would have infinite variance: where two walls
+        // meet, the geometry term of a light sample on the other wall grows without bound
+        // and no BSDF sample shares the weight. Under emitters that reflect nothing the
+        // path shades only the floor's centre, away from every edge.
         whole_path(
             t,
-            "a white furnace (ρ = 0.5), light weights: Le/(1 − ρ)",
-            path_trace::furnace_around(DVec3::splat(0.5), &render("light"), None),
-            |s| uniform_sphere(s.next_2d()),
-            2.0 * path_trace::EMISSION,
+            "a phong floor under emitters that reflect nothing, light weights: Le (kd + ks)",
+            path_trace::floor_box(&path_trace::PHONG.yaml(), &render("light")),
+            |_| Vec3::NEG_Y,
+            CHANNEL_WEIGHTS.dot(path_trace::EMISSION * phong_albedo),
         ),
         whole_path(
             t,
@@ -513,7 +565,7 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         whole_path(
             t,
             "a phong floor under emitters that reflect nothing, balance weights: Le (kd + ks)",
-            path_trace::phong_floor_box(&path_trace::PHONG, &render("mis, heuristic: balance")),
+            path_trace::floor_box(&path_trace::PHONG.yaml(), &render("mis, heuristic: balance")),
             |_| Vec3::NEG_Y,
             CHANNEL_WEIGHTS.dot(path_trace::EMISSION * phong_albedo),
         ),
@@ -565,6 +617,31 @@ pub fn variance_pairs<T: Tasks>(t: &T) -> Vec<VariancePair<'_>> {
             bound: VarianceBound::BalanceBelowOther,
         },
     ]
+}
+
+/// The stored light the rough floors reflect beside the same quadratures of `t`'s BSDF,
+/// at the hit each estimator shades.
+pub(super) fn stored_quadratures<T: Tasks>(t: &T) -> Vec<StoredQuadrature> {
+    let mut all = Vec::new();
+    for (what, floor, stored) in [
+        ("ROUGH_REFLECTED", Floor::Rough, ROUGH_REFLECTED),
+        ("ROUGH_GRAZING_REFLECTED", Floor::RoughGrazing, ROUGH_GRAZING_REFLECTED),
+    ] {
+        let scene = scene(Lighting::Open, 1.0, floor);
+        let hit = shading_hit(&scene, Lighting::Open.shading_point());
+        let [square, albedo] = stored;
+        all.push(StoredQuadrature {
+            what: format!("mis {what}[0]"),
+            stored: square,
+            computed: rough_conductor::over(t, &scene, &hit, floor.wo(), &SQUARE),
+        });
+        all.push(StoredQuadrature {
+            what: format!("mis {what}[1]"),
+            stored: albedo,
+            computed: rough_conductor::albedo(t, &scene, &hit, floor.wo()),
+        });
+    }
+    all
 }
 
 #[cfg(test)]

@@ -8,6 +8,9 @@
 mod indices;
 mod phong_floor;
 mod polygon;
+mod rough_conductor;
+
+pub use rough_conductor::StoredQuadrature;
 
 use super::call::{Call, SampleCall};
 use super::case::{Rule, ValueCase};
@@ -462,6 +465,15 @@ pub struct EstimatorSpec<'a> {
 /// The estimators of the estimator check of `task`, on implementation `t`.
 pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
     estimators_of(task, t)
+}
+
+/// Every stored quadrature the estimators' answers are built from (the light rough
+/// conductors reflect), beside the same quadrature of `t`'s BSDF: with the reference's
+/// table the two agree (`tests/instructor/reference_values.rs`).
+pub fn stored_quadratures<T: Tasks>(t: &T) -> Vec<StoredQuadrature> {
+    let mut all = path_trace::stored_quadratures(t);
+    all.extend(mis::stored_quadratures(t));
+    all
 }
 
 /// What `task`'s estimator and sampling checks are declared to catch (its catalogue file's

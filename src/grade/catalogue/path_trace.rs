@@ -12,6 +12,7 @@
 //! weights vary around and above 1.
 
 use super::phong_floor::PhongSurface;
+use super::rough_conductor::{self, RoughConductor, StoredQuadrature};
 use super::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
 use crate::geometry::Ray;
 use crate::grade::power::Declared;
@@ -76,7 +77,7 @@ const FURNACE_WALLS: [&str; 6] = [
     "[-1, -1, 1], edge1: [0, 2, 0], edge2: [2, 0, 0]",
 ];
 
-/// The Phong floor of [`phong_floor_box`] seen along its normal.
+/// The Phong floor of [`floor_box`] seen along its normal.
 pub(super) const PHONG: PhongSurface = PhongSurface {
     kd: DVec3::new(0.1, 0.3, 0.5),
     ks: DVec3::new(0.5, 0.4, 0.2),
@@ -95,32 +96,56 @@ const BROAD_PHONG: PhongSurface = PhongSurface {
 /// its normal (+y).
 const GRAZING: Vec3 = Vec3::new(0.939_692_6, -0.342_020_14, 0.0);
 
-/// The furnace box with a floor of `surface` that emits nothing, under five walls that emit
-/// [`EMISSION`] and reflect nothing (their BSDF samples fail: `mis` returns no bounce). The
-/// floor's hemisphere sees radiance `Le` everywhere, so it reflects `Le` times its albedo:
-/// `Le (kd + ks)` along its normal.
-pub(super) fn phong_floor_box(surface: &PhongSurface, render: &str) -> Scene {
+/// The furnace box with a floor of `material` (YAML) that emits nothing, under five walls
+/// that emit [`EMISSION`] and reflect nothing (their BSDF samples fail: `mis` returns no
+/// bounce). The floor's hemisphere sees radiance `Le` everywhere, so it reflects `Le` times
+/// its albedo: `Le (kd + ks)` along the normal of a Phong floor.
+pub(super) fn floor_box(material: &str, render: &str) -> Scene {
     let mut text = format!(
         "camera: {{eye: [0, 0, 0], target: [0, 0, -1], up: [0, 1, 0], fov: 60, width: 4, height: 4}}
 render: {render}
 materials:
-  floor: {}
+  floor: {material}
 shapes:
-",
-        surface.yaml()
+"
     );
     let (floor, emitters) = FURNACE_WALLS.split_first().expect("six walls");
     text += &format!("  - quad: {{origin: {floor}, material: floor}}\n");
     for wall in emitters {
         text += &format!("  - quad: {{origin: {wall}, emission: {EMISSION}}}\n");
     }
-    load(&text, "<grader Phong floor>")
+    load(&text, "<grader floor box>")
 }
 
-/// A diffuse floor of `albedo`, 20 × 20 around the origin, under a sky of radiance
-/// [`EMISSION`]: a flat floor sees only the sky, so the floor's radiance is `ρ Le` exactly,
-/// however many bounces are allowed.
-fn floor_under_sky(albedo: f64, render: &str) -> Scene {
+/// The rough conductor of [`floor_box`] seen along its normal: copper-coloured, α = 0.3.
+const ROUGH: RoughConductor = RoughConductor {
+    alpha_x: 0.3,
+    alpha_y: 0.3,
+    f0: DVec3::new(0.95, 0.64, 0.54),
+};
+
+/// `∫ f cos θi dωi` per channel of [`ROUGH`] along its normal, by quadrature of the
+/// reference ([`stored_quadratures`]).
+const ROUGH_ALBEDO: DVec3 = DVec3::new(0.833_492_152, 0.561_521_454, 0.473_789_002);
+
+/// An anisotropic rough conductor seen at 70° from its normal ([`GRAZING`]): a large
+/// share of its half-vector samples reflect below the horizon and fail.
+const ANISOTROPIC: RoughConductor = RoughConductor {
+    alpha_x: 0.15,
+    alpha_y: 0.6,
+    f0: DVec3::new(0.9, 0.8, 0.5),
+};
+
+/// `∫ f cos θi dωi` per channel of [`ANISOTROPIC`] seen from [`GRAZING`], by quadrature
+/// of the reference ([`stored_quadratures`]).
+const ANISOTROPIC_ALBEDO: DVec3 = DVec3::new(0.702_240_285, 0.625_875_187, 0.396_779_802);
+
+/// A diffuse floor of `albedo`, 20 × 20 around the origin, lit by `light` (a light in the
+/// scene format) and nothing else: under a sky of radiance [`EMISSION`] a flat floor sees
+/// only the sky, so its radiance is `ρ Le` exactly however many bounces are allowed; under
+/// [`POINT`] a path's continuation escapes into the dark, and the radiance at the origin is
+/// `ρ/π · I cos θ / d²` ([`under_point_light`]).
+fn floor_under(albedo: f64, light: &str, render: &str) -> Scene {
     let text = format!(
         "camera: {{eye: [0, 0, 1], target: [0, 0, 0], up: [0, 1, 0], fov: 60, width: 4, height: 4}}
 render: {render}
@@ -129,10 +154,31 @@ materials:
 shapes:
   - quad: {{origin: [-10, -10, 0], edge1: [20, 0, 0], edge2: [0, 20, 0], material: floor}}
 lights:
-  - environment: {{radiance: {EMISSION}}}
+  - {light}
 "
     );
-    load(&text, "<grader floor under a sky>")
+    load(&text, "<grader floor under a light>")
+}
+
+/// The sky of [`floor_under`], of radiance [`EMISSION`], in the scene format.
+fn sky() -> String {
+    format!("environment: {{radiance: {EMISSION}}}")
+}
+
+/// The point light of [`floor_under`] in the scene format.
+fn point_light() -> String {
+    let ([x, y, z], intensity) = POINT;
+    format!("point: {{position: [{x}, {y}, {z}], intensity: {intensity}}}")
+}
+
+/// Position and intensity of the point light of [`floor_under`].
+const POINT: ([f64; 3], f64) = ([0.6, -0.2, 0.8], 2.0);
+
+/// The radiance at the origin of [`floor_under`]'s floor under [`point_light`].
+fn under_point_light(albedo: f64) -> f64 {
+    let ([x, y, z], intensity) = POINT;
+    let d2 = x * x + y * y + z * z;
+    albedo / std::f64::consts::PI * intensity * (z / d2.sqrt()) / d2
 }
 
 fn load(text: &str, name: &str) -> Scene {
@@ -146,7 +192,7 @@ pub(super) fn path_estimator<'a, T: Tasks>(
     t: &'a T,
     scene: Scene,
     origin: Vec3,
-    direction: fn(&mut Sampler) -> Vec3,
+    direction: impl Fn(&mut Sampler) -> Vec3 + 'a,
 ) -> Box<super::super::estimator::Estimator<'a>> {
     let depth = scene.settings().max_depth;
     path_estimator_at(t, scene, depth, origin, direction)
@@ -158,7 +204,7 @@ fn path_estimator_at<'a, T: Tasks>(
     scene: Scene,
     depth: i32,
     origin: Vec3,
-    direction: fn(&mut Sampler) -> Vec3,
+    direction: impl Fn(&mut Sampler) -> Vec3 + 'a,
 ) -> Box<super::super::estimator::Estimator<'a>> {
     Box::new(move |s: &mut Sampler| {
         let ray = Ray::new(origin, direction(s));
@@ -240,7 +286,7 @@ fn depth_spec<T: Tasks>(t: &T, depth: i32, analytic: f64) -> EstimatorSpec<'_> {
     }
 }
 
-/// A ray straight down onto the centre of [`phong_floor_box`]'s floor.
+/// A ray straight down onto the centre of [`floor_box`]'s floor.
 fn phong_floor_spec<'a, T: Tasks>(t: &'a T, how: &str, render: &str) -> EstimatorSpec<'a> {
     EstimatorSpec {
         name: format!(
@@ -248,12 +294,12 @@ fn phong_floor_spec<'a, T: Tasks>(t: &'a T, how: &str, render: &str) -> Estimato
         ),
         analytic: CHANNEL_WEIGHTS.dot(EMISSION * (PHONG.kd + PHONG.ks)),
         samples: 40_000,
-        estimate: path_estimator(t, phong_floor_box(&PHONG, render), Vec3::ZERO, |_| -Vec3::Y),
+        estimate: path_estimator(t, floor_box(&PHONG.yaml(), render), Vec3::ZERO, |_| -Vec3::Y),
     }
 }
 
 /// A ray at 70° from the normal onto the centre of a broad Phong floor in
-/// [`phong_floor_box`]: its albedo there (by quadrature), where a large share of the
+/// [`floor_box`]: its albedo there (by quadrature), where a large share of the
 /// BSDF samples fail and the direct light must still count.
 fn grazing_phong_spec<'a, T: Tasks>(t: &'a T, render: &str) -> EstimatorSpec<'a> {
     // In the floor's frame (z = its normal +y), the direction away from the floor.
@@ -266,12 +312,40 @@ fn grazing_phong_spec<'a, T: Tasks>(t: &'a T, render: &str) -> EstimatorSpec<'a>
         // From 0.8 along `wo` above the floor's centre (0, −1, 0).
         estimate: path_estimator(
             t,
-            phong_floor_box(&BROAD_PHONG, render),
-            Vec3::new(0.0, -1.0, 0.0) - GRAZING * 0.8,
+            floor_box(&BROAD_PHONG.yaml(), render),
+            FLOOR_CENTRE - GRAZING * 0.8,
             |_| GRAZING,
         ),
     }
 }
+
+/// A ray onto the centre of [`floor_box`]'s floor of `surface`, from `direction` (towards
+/// the floor), whose answer is `Le` times `albedo` (the surface's albedo seen from there).
+fn rough_floor_spec<'a, T: Tasks>(
+    t: &'a T,
+    how: &str,
+    surface: &RoughConductor,
+    direction: Vec3,
+    albedo: DVec3,
+    render: &str,
+) -> EstimatorSpec<'a> {
+    EstimatorSpec {
+        name: format!(
+            "a rough conductor floor under emitters that reflect nothing, {how}: Le × its albedo"
+        ),
+        analytic: CHANNEL_WEIGHTS.dot(EMISSION * albedo),
+        samples: 40_000,
+        estimate: path_estimator(
+            t,
+            floor_box(&surface.yaml(), render),
+            FLOOR_CENTRE - direction * 0.8,
+            move |_| direction,
+        ),
+    }
+}
+
+/// The centre of [`floor_box`]'s floor.
+const FLOOR_CENTRE: Vec3 = Vec3::new(0.0, -1.0, 0.0);
 
 /// `Le Σ_{k<segments} ρ^k`.
 fn bounded(albedo: f64, segments: i32) -> f64 {
@@ -331,6 +405,8 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
         coloured_furnace_spec(t, &roulette("~")),
         depth_spec(t, 1, bounded(0.5, 1)),
         depth_spec(t, 2, bounded(0.5, 2)),
+        depth_spec(t, 5, bounded(0.5, 5)),
+        depth_spec(t, 8, bounded(0.5, 8)),
         depth_spec(t, 0, 0.0),
         depth_spec(t, -1, 0.0),
         phong_floor_spec(t, "depth 2 without roulette", &without_roulette(2)),
@@ -341,7 +417,7 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
             samples: 2_000,
             estimate: path_estimator(
                 t,
-                phong_floor_box(&PHONG, &roulette("~")),
+                floor_box(&PHONG.yaml(), &roulette("~")),
                 Vec3::ZERO,
                 |_| Vec3::Y,
             ),
@@ -351,6 +427,33 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
             "unbounded depth, roulette at every bounce",
             &roulette("~"),
         ),
+        rough_floor_spec(
+            t,
+            "seen along its normal, depth 2 without roulette",
+            &ROUGH,
+            -Vec3::Y,
+            ROUGH_ALBEDO,
+            &without_roulette(2),
+        ),
+        rough_floor_spec(
+            t,
+            "anisotropic, seen at 70° (many BSDF samples fail), roulette at every bounce",
+            &ANISOTROPIC,
+            GRAZING,
+            ANISOTROPIC_ALBEDO,
+            &roulette("~"),
+        ),
+        EstimatorSpec {
+            name: "a floor (ρ = 0.5) under a point light, unbounded depth with roulette: ρ/π · I cos θ / d²".into(),
+            analytic: under_point_light(0.5),
+            samples: 20_000,
+            estimate: path_estimator(
+                t,
+                floor_under(0.5, &point_light(), &roulette("~")),
+                Vec3::Z,
+                |_| -Vec3::Z,
+            ),
+        },
         EstimatorSpec {
             // Four segments: the camera ray, the bounce off the floor, and two that escape.
             name: "a floor (ρ = 0.5) under a sky, depth 4: ρ Le, the sky counted once".into(),
@@ -358,10 +461,33 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
             samples: 40_000,
             estimate: path_estimator(
                 t,
-                floor_under_sky(0.5, &without_roulette(4)),
+                floor_under(0.5, &sky(), &without_roulette(4)),
                 Vec3::Z,
                 |_| -Vec3::Z,
             ),
         },
     ]
+}
+
+/// The stored albedos of the rough floors beside the same quadratures of `t`'s BSDF, at
+/// the hit each estimator's ray makes.
+pub(super) fn stored_quadratures<T: Tasks>(t: &T) -> Vec<StoredQuadrature> {
+    let render = "{spp: 1, max_depth: 2, rr_depth: 100, strategy: mis, heuristic: power, seed: 0}";
+    [
+        ("ROUGH_ALBEDO", ROUGH, -Vec3::Y, ROUGH_ALBEDO),
+        ("ANISOTROPIC_ALBEDO", ANISOTROPIC, GRAZING, ANISOTROPIC_ALBEDO),
+    ]
+    .into_iter()
+    .map(|(what, surface, direction, stored)| {
+        let scene = floor_box(&surface.yaml(), render);
+        let hit = scene
+            .intersect(&Ray::new(FLOOR_CENTRE - direction * 0.8, direction))
+            .expect("the ray meets the floor");
+        StoredQuadrature {
+            what: format!("path_trace {what}"),
+            stored,
+            computed: rough_conductor::albedo(t, &scene, &hit, -direction),
+        }
+    })
+    .collect()
 }

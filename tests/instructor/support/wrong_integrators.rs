@@ -149,6 +149,9 @@ enum MisFlaw {
     LambertianPdfInWeight,
     /// Point lights skipped under BSDF weights, like area lights.
     NoPointLightsUnderBsdfWeights,
+    /// The BSDF sample's MIS weight with the Lambertian density `cos θ / π` for its own
+    /// pdf (right on diffuse surfaces only).
+    LambertianPdfInBsdfWeight,
     /// Area lights taken as two-sided (`|cos θl|`).
     TwoSidedLights,
     /// The bounce returned with `emission_counted: false`, so the caller adds the light it
@@ -213,7 +216,12 @@ fn mis_variant(
         let w = if s.delta {
             1.0
         } else {
-            weight(heuristic, false, s.pdf, pdf_light, flaw)
+            let pdf_bsdf = if flaw == MisFlaw::LambertianPdfInBsdfWeight {
+                hit.n.dot(s.wi).abs() * std::f32::consts::FRAC_1_PI
+            } else {
+                s.pdf
+            };
+            weight(heuristic, false, pdf_bsdf, pdf_light, flaw)
         };
         radiance += s.weight * emitted * w;
     }
@@ -345,6 +353,8 @@ enum TrackingFlaw {
     OneStepShort,
     /// One tentative collision more than `max_steps`.
     OneStepTooMany,
+    /// A walk that ran out of steps reported as an absorption where it stopped.
+    ExhaustedAsAbsorption,
 }
 
 fn tracking_variant(
@@ -399,10 +409,10 @@ fn tracking_variant(
             return FreeFlight::Scatter { t };
         }
     }
-    if flaw == TrackingFlaw::ExhaustedAsEscape {
-        FreeFlight::Escape
-    } else {
-        FreeFlight::Exhausted
+    match flaw {
+        TrackingFlaw::ExhaustedAsEscape => FreeFlight::Escape,
+        TrackingFlaw::ExhaustedAsAbsorption => FreeFlight::Absorb { t },
+        _ => FreeFlight::Exhausted,
     }
 }
 
@@ -535,6 +545,15 @@ pub fn catalogue() -> Vec<Variant> {
                 })
             },
         ),
+        wrong(
+            "the Lambertian density in the BSDF sample's weight",
+            Mis,
+            |p| {
+                p.mis = Some(|t, s, h, wo, he, sa| {
+                    mis_variant(t, s, h, wo, he, sa, MisFlaw::LambertianPdfInBsdfWeight)
+                })
+            },
+        ),
         wrong("point lights skipped under BSDF weights", Mis, |p| {
             p.mis = Some(|t, s, h, wo, he, sa| {
                 mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLightsUnderBsdfWeights)
@@ -578,6 +597,15 @@ pub fn catalogue() -> Vec<Variant> {
             |p| {
                 p.delta_tracking = Some(|m, r, tm, n, s| {
                     tracking_variant(m, r, tm, n, s, TrackingFlaw::OneStepTooMany)
+                })
+            },
+        ),
+        wrong(
+            "a walk out of steps reported as an absorption",
+            DeltaTracking,
+            |p| {
+                p.delta_tracking = Some(|m, r, tm, n, s| {
+                    tracking_variant(m, r, tm, n, s, TrackingFlaw::ExhaustedAsAbsorption)
                 })
             },
         ),
