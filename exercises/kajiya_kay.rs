@@ -21,6 +21,9 @@
 //! ## Edge cases
 //! - `t·w` from f32 vectors can be 1.0000001: `sqrt(1 − c²)` is then NaN. Clamp.
 //! - Clamp the cone cosine at 0 before the power (a negative base with `p = 80.5` is NaN).
+//! - `p = 0` is allowed. Where `c > 0` the specular term is then `ks`; where `c ≤ 0` the
+//!   formula as written gives `max(0, c)^0 = 1` (what `powf` gives) and the limit `p → 0⁺`
+//!   gives 0: either is accepted, but it must be one of the two.
 //! - `wi` along the fibre (`sin θi = 0`) must give a finite value.
 //!
 //! ## What the worksheet gets wrong

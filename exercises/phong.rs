@@ -20,6 +20,10 @@
 //! ## Edge cases
 //! - Clamp `r·wo` at 0 **before** the power: a negative base with a fractional exponent
 //!   (10.5) is NaN, and with an even one it lights a lobe that should not exist.
+//! - An exponent of 0 is allowed. Where `r·wo > 0` the lobe is then `ks/π`; where
+//!   `r·wo ≤ 0` the formula as written gives `max(0, r·wo)^0 = 1` (what `powf` gives) and
+//!   the limit `n → 0⁺` gives 0: either is accepted, but it must be one of the two (a
+//!   power computed as `exp(n ln x)` gives NaN there).
 //!
 //! ## What the worksheet gets wrong
 //! It asks you to show that this BRDF violates reciprocity. It does not: write `r(wi)·wo`

@@ -380,7 +380,10 @@ pub const fn channel(
 }
 
 /// A lobe exponent ≥ 0 that need not be an integer, log-spread from `from`; its boundary
-/// 0 is left open (the clamped `0^0` may be 1, or the lobe skipped).
+/// 0 is left open to the value checks, because the exercise texts accept two readings
+/// there (`max(0, x)^0` is 1 as written, 0 as the limit from above). The stability cases
+/// judge an exponent of 0 with either (`phong/exponent_zero_*`,
+/// `kajiya_kay/exponent_zero_off_the_cone`).
 pub const fn exponent(
     function: &'static str,
     covers: &'static [&'static str],

@@ -175,6 +175,10 @@ fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
             ],
         ),
         (
+            Flaw::PhongPowerByLogarithm,
+            vec![("phong/exponent_zero_behind_the_mirror", NaN)],
+        ),
+        (
             Flaw::GapZeroOverZero,
             vec![
                 ("reciprocity_gap/zero_brdf", NaN),
@@ -188,6 +192,7 @@ fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
                 ("kajiya_kay/wi_along_tangent", NaN),
                 ("kajiya_kay/mirror_cone", OutOfRange),
                 ("kajiya_kay/tangent_dot_above_one", NaN),
+                ("kajiya_kay/exponent_zero_off_the_cone", WrongValue),
                 ("kajiya_kay/fractional_exponent_negative_cone", WrongValue),
                 ("kajiya_kay/highlight_underflow", WrongValue),
             ],

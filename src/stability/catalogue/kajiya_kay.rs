@@ -1,6 +1,6 @@
 //! Stability cases of the `kajiya_kay` task: a direction along the fibre, the true mirror
-//! cone, a tangent dot product above one, a fractional exponent on a negative cone cosine
-//! and an underflowing highlight.
+//! cone, a tangent dot product above one, a fractional exponent on a negative cone cosine,
+//! an exponent of 0 off the cone and an underflowing highlight.
 
 use crate::bsdf::KajiyaKayParams;
 use crate::stability::case::{Case, NON_NEGATIVE};
@@ -46,6 +46,22 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             expect: Expect::vector([0.0; 3], Tolerance::abs(1e-6)),
             guard: "kd sin θi = 0 and wo is far off the reflection cone, so the highlight is 0: no \
                     division by sin θi",
+        },
+        Case {
+            task: TaskId::KajiyaKay,
+            name: "kajiya_kay/exponent_zero_off_the_cone",
+            input: "t = (0, 0, 1), wi = wo = (0.5, 0, 0.866) (cone cosine −0.5), p 0",
+            eval: |t| {
+                let w = from_tangent(30f64.to_radians());
+                t.kajiya_kay(w, w, Vec3::Z, &params(0.0)).into()
+            },
+            range: NON_NEGATIVE,
+            expect: Expect::AnyOf(vec![
+                Expect::vector([0.95; 3], Tolerance::rel(1e-5)),
+                Expect::vector([0.05; 3], Tolerance::rel(1e-5)),
+            ]),
+            guard: "kd sin θi = 0.05, and max(0, c)^0 is 1 as written or 0 as the limit p → 0⁺; a \
+                    power computed as exp(p ln c) gives NaN",
         },
         Case {
             task: TaskId::KajiyaKay,

@@ -1,6 +1,6 @@
 //! Stability cases of the `phong` task: negative lobe cosines with fractional and integer
-//! exponents, a huge exponent at the peak, a direction below the surface, and degenerate
-//! inputs of the reciprocity test.
+//! exponents, an exponent of 0 in and behind the lobe, a huge exponent at the peak, a
+//! direction below the surface, and degenerate inputs of the reciprocity test.
 
 use crate::bsdf::PhongParams;
 use crate::sampling::Sampler;
@@ -56,6 +56,34 @@ pub fn cases<T: Tasks>() -> Vec<Case<T>> {
             range: NON_NEGATIVE,
             expect: Expect::vector([0.0; 3], Tolerance::abs(0.0)),
             guard: CLAMP,
+        },
+        Case {
+            task: TaskId::Phong,
+            name: "phong/exponent_zero_behind_the_mirror",
+            input: "r·wo = −0.2, n = 0, kd = 0, ks = 0.4",
+            eval: |t| {
+                let (wo, wi) = negative_lobe_pair();
+                t.phong(wo, wi, &lobe_only(0.0)).into()
+            },
+            range: NON_NEGATIVE,
+            expect: Expect::AnyOf(vec![
+                Expect::vector([0.4 / PI; 3], Tolerance::rel(1e-5)),
+                Expect::vector([0.0; 3], Tolerance::abs(0.0)),
+            ]),
+            guard: "max(0, r·wo)^0 is 1 as written (ks/π) or 0 as the limit n → 0⁺; a power \
+                    computed as exp(n ln x) gives NaN",
+        },
+        Case {
+            task: TaskId::Phong,
+            name: "phong/exponent_zero_in_the_lobe",
+            input: "wo = wi = (0.6, 0, 0.8) (r·wo = 0.28), n = 0, kd = 0, ks = 0.4",
+            eval: |t| {
+                let w = Vec3::new(0.6, 0.0, 0.8);
+                t.phong(w, w, &lobe_only(0.0)).into()
+            },
+            range: NON_NEGATIVE,
+            expect: Expect::vector([0.4 / PI; 3], Tolerance::rel(1e-5)),
+            guard: "(n + 2)/(2π) (r·wo)^n is 1/π at n = 0 wherever r·wo > 0",
         },
         Case {
             task: TaskId::Phong,

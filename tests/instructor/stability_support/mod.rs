@@ -38,6 +38,8 @@ pub enum Flaw {
     CancellingGgx,
     /// `phong` raises an unclamped lobe cosine to the exponent.
     PhongUnclamped,
+    /// `phong` takes the power of the clamped lobe cosine as `exp(n ln x)`.
+    PhongPowerByLogarithm,
     /// `reciprocity_gap` divides 0 by 0 and starts its maximum at −∞.
     GapZeroOverZero,
     /// `kajiya_kay` is the worksheet's form.
@@ -70,7 +72,7 @@ pub fn flawed(flaw: Flaw) -> Patch {
         Flaw::SmithNoChi | Flaw::SmithHangs => TaskId::SmithG1,
         Flaw::HalfVectorUnguarded => TaskId::CookTorrance,
         Flaw::CancellingGgx => TaskId::AnisoNdf,
-        Flaw::PhongUnclamped | Flaw::GapZeroOverZero => TaskId::Phong,
+        Flaw::PhongUnclamped | Flaw::PhongPowerByLogarithm | Flaw::GapZeroOverZero => TaskId::Phong,
         Flaw::SheetKajiyaKay => TaskId::KajiyaKay,
         Flaw::BeckmannUnguarded => TaskId::BeckmannNdf,
         Flaw::NdfPdfUnguarded | Flaw::NdfPdfNoJacobian => TaskId::NdfSample,
@@ -107,6 +109,7 @@ pub fn flawed(flaw: Flaw) -> Patch {
         Flaw::HalfVectorUnguarded => p.cook_torrance = Some(naive::cook_torrance),
         Flaw::CancellingGgx => p.aniso_ndf = Some(naive::aniso_ndf),
         Flaw::PhongUnclamped => p.phong = Some(naive::phong),
+        Flaw::PhongPowerByLogarithm => p.phong = Some(naive::phong_power_by_logarithm),
         Flaw::GapZeroOverZero => p.reciprocity_gap = Some(naive::reciprocity_gap),
         Flaw::SheetKajiyaKay => p.kajiya_kay = Some(naive::kajiya_kay),
         Flaw::BeckmannUnguarded => p.beckmann_ndf = Some(naive::beckmann_ndf),

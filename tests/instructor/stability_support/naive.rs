@@ -129,6 +129,17 @@ pub fn phong(t: &impl Tasks, wo: Vec3, wi: Vec3, params: &PhongParams) -> Vec3 {
     params.kd * FRAC_1_PI + params.ks * ((params.exponent + 2.0) / (2.0 * PI) * lobe)
 }
 
+/// The clamped lobe cosine raised to the exponent as `exp(n ln x)`: right for every
+/// exponent above 0, NaN (`0 · −∞`) behind the mirror direction at an exponent of 0.
+pub fn phong_power_by_logarithm(t: &impl Tasks, wo: Vec3, wi: Vec3, params: &PhongParams) -> Vec3 {
+    if wo.z <= 0.0 || wi.z <= 0.0 {
+        return Vec3::ZERO;
+    }
+    let cos = t.reflect(wi, Vec3::Z).dot(wo).max(0.0);
+    let lobe = (params.exponent * cos.ln()).exp();
+    params.kd * FRAC_1_PI + params.ks * ((params.exponent + 2.0) / (2.0 * PI) * lobe)
+}
+
 /// The worksheet's fibre model: kd + ks (wi·wo)/(sin θi sin θo) sin^p θh.
 pub fn kajiya_kay(wo: Vec3, wi: Vec3, tangent: Vec3, params: &KajiyaKayParams) -> Vec3 {
     let (cos_i, cos_o) = (tangent.dot(wi), tangent.dot(wo));
