@@ -9,7 +9,8 @@ use crate::scene::{LoadOptions, Scene};
 use crate::worksheet::Tasks;
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
-use std::time::Duration;
+use std::sync::{Mutex, PoisonError};
+use std::time::{Duration, Instant};
 
 /// The scene `pbrlab render` renders when none is given.
 pub const DEFAULT_SCENE: &str = "scenes/cornell.yaml";
@@ -29,8 +30,9 @@ pub struct Args {
     #[arg(long)]
     pub spp: Option<u32>,
     /// Continue the render that left its checkpoint beside the output
-    /// (`renders/SCENE.checkpoint`, saved after every pass): killed or finished with fewer
-    /// samples, it goes on to --spp and gives the image an uninterrupted render gives.
+    /// (`renders/SCENE.checkpoint`, saved as the render goes and at its end): killed or
+    /// finished with fewer samples, it goes on to --spp and gives the image an
+    /// uninterrupted render gives.
     #[arg(long)]
     pub resume: bool,
     /// Start no new pass after this much wall time (`90s`, `10m`, `2h`; a bare number is
@@ -355,7 +357,7 @@ pub fn run(args: Args) -> Result<()> {
 }
 
 /// One render from the command line: progress, the image and a checkpoint saved after
-/// every pass, panics reported.
+/// passes (see [`SAVE_SPACING`]) and at the end, panics reported.
 struct Job<'a> {
     scene: &'a Scene,
     output: &'a Path,
@@ -364,17 +366,45 @@ struct Job<'a> {
     time_limit: Option<Duration>,
 }
 
+/// A pass's estimate is saved when at least this many times the last save's duration has
+/// gone by since that save ended, so saving (PNG filtering, EXR compression, the
+/// checkpoint) takes at most 1/20 of a render; saving every pass took 6–17 % of a short
+/// one (`src/renderer/PROFILE.md`), with the other threads idle meanwhile. The first pass
+/// is always saved, and the last one at the end.
+const SAVE_SPACING: u32 = 19;
+
+/// When a render's estimate was last saved, and the newest state saved since.
+#[derive(Default)]
+struct Saves {
+    /// When the last save ended, and how long it took.
+    last: Option<(Instant, Duration)>,
+    /// The state of the newest pass, when it was not saved.
+    unsaved: Option<RenderState>,
+}
+
 impl Job<'_> {
     fn run<T: Tasks>(&self, t: &T, start: RenderState) -> Result<RenderOutput> {
-        // Saving costs milliseconds and passes double in length, so every pass is saved:
-        // an interrupted render keeps its last complete pass, and can continue from it.
         let (checkpoint_path, origin) = self.checkpoint;
+        let write = |state: &RenderState| {
+            output::write_both(self.output, &state.film.mean())
+                .and_then(|_| checkpoint::save(checkpoint_path, origin, state))
+        };
+        let saves = Mutex::new(Saves::default());
         let save = |state: &RenderState| {
-            let saved = output::write_both(self.output, &state.film.mean())
-                .and_then(|_| checkpoint::save(checkpoint_path, origin, state));
-            if let Err(e) = saved {
+            let mut saves = saves.lock().unwrap_or_else(PoisonError::into_inner);
+            let due = saves
+                .last
+                .is_none_or(|(end, took)| end.elapsed() >= took * SAVE_SPACING);
+            if !due {
+                saves.unsaved = Some(state.clone());
+                return;
+            }
+            let began = Instant::now();
+            if let Err(e) = write(state) {
                 eprintln!("warning: could not save the current estimate: {e:#}");
             }
+            saves.last = Some((Instant::now(), began.elapsed()));
+            saves.unsaved = None;
         };
         let options = RenderOptions {
             spp: self.scene.settings().spp,
@@ -383,9 +413,30 @@ impl Job<'_> {
             time_limit: self.time_limit,
             on_pass: Some(&save),
         };
-        let out = catch_task_panic(|| render::render_from(self.scene, t, &options, start))?;
-        output::write_both(self.output, &out.mean)?;
-        Ok(out)
+        let rendered = catch_task_panic(|| render::render_from(self.scene, t, &options, start));
+        // What the passes since the last save computed is kept, whether or not the render
+        // finished.
+        let unsaved = saves
+            .into_inner()
+            .unwrap_or_else(PoisonError::into_inner)
+            .unsaved;
+        match rendered {
+            Ok(out) => {
+                output::write_both(self.output, &out.mean)?;
+                if let Some(state) = unsaved {
+                    checkpoint::save(checkpoint_path, origin, &state)?;
+                }
+                Ok(out)
+            }
+            Err(e) => {
+                if let Some(state) = unsaved
+                    && let Err(saving) = write(&state)
+                {
+                    eprintln!("warning: could not save the last estimate: {saving:#}");
+                }
+                Err(e)
+            }
+        }
     }
 }
 

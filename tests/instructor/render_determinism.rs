@@ -196,6 +196,32 @@ fn render_resume_after_a_kill_gives_the_uninterrupted_image() {
     );
 }
 
+/// Passes are saved only now and then, but a finished render's checkpoint holds its last
+/// pass: `--resume` with the same samples per pixel has nothing left to do.
+#[test]
+fn a_finished_render_leaves_the_checkpoint_of_its_last_pass() {
+    use std::process::Command;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("furnace.exr");
+    let render = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+            .arg("render")
+            .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/furnace.yaml"))
+            .args(["--spp", "37", "--threads", "1", "--quiet", "-o"])
+            .arg(&out)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    assert!(render(&[]).status.success());
+    let text = std::fs::read(dir.path().join("furnace.checkpoint")).unwrap();
+    let line = text.split(|b| *b == b'\n').next().unwrap();
+    let header: serde_json::Value = serde_json::from_slice(line).unwrap();
+    assert_eq!(header["spp_done"], 37, "{header}");
+    let resumed = render(&["--resume"]);
+    assert!(resumed.status.success());
+}
+
 #[test]
 fn a_render_counts_the_rays_cast_in_a_reference_library() {
     use pbrlab::grade::worker::ImplSpec;
