@@ -20,6 +20,16 @@ impl Tolerance {
         Self { abs, rel }
     }
 
+    /// A purely absolute tolerance.
+    pub const fn abs(abs: f64) -> Self {
+        Self { abs, rel: 0.0 }
+    }
+
+    /// A purely relative tolerance.
+    pub const fn rel(rel: f64) -> Self {
+        Self { abs: 0.0, rel }
+    }
+
     /// For f32 task outputs computed by any reasonable algebraic form.
     pub const F32: Tolerance = Tolerance::new(1e-5, 2e-4);
 

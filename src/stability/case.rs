@@ -70,7 +70,7 @@ impl<T> Case<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::stability::expect::Tolerance;
+    use crate::grade::tolerance::Tolerance;
 
     fn case(range: Bound, expect: Expect) -> Case<()> {
         Case {

@@ -1,33 +1,9 @@
 //! What a stability case expects of a number: bounds and tolerances.
 
 use super::value::{Value, format_number};
+use crate::grade::tolerance::Tolerance;
 
-/// How close a number must be to its target: `|x − target| ≤ abs + rel·|target|`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerance {
-    /// Absolute part.
-    pub abs: f64,
-    /// Relative part (a fraction of the target's magnitude).
-    pub rel: f64,
-}
-
-impl Tolerance {
-    /// A purely absolute tolerance.
-    pub const fn abs(abs: f64) -> Self {
-        Self { abs, rel: 0.0 }
-    }
-
-    /// A purely relative tolerance.
-    pub const fn rel(rel: f64) -> Self {
-        Self { abs: 0.0, rel }
-    }
-
-    /// True when `x` is within the tolerance of `target` (never for NaN).
-    pub fn accepts(&self, x: f64, target: f64) -> bool {
-        (x - target).abs() <= self.abs + self.rel * target.abs()
-    }
-}
-
+/// The tolerance as the stability table shows it.
 impl std::fmt::Display for Tolerance {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match (self.abs, self.rel) {
@@ -51,7 +27,7 @@ impl Bound {
     /// True when `x` satisfies the bound (never for NaN).
     pub fn accepts(&self, x: f64) -> bool {
         match *self {
-            Bound::Near(target, tol) => tol.accepts(x, target),
+            Bound::Near(target, tol) => tol.close(x, target),
             Bound::Within(lo, hi) => lo <= x && x <= hi,
         }
     }
@@ -106,7 +82,7 @@ impl Expect {
         match self {
             Expect::Near(target, tol) => {
                 let (got, want) = (value.numbers(), target.numbers());
-                same_shape(value, target) && got.iter().zip(&want).all(|(x, t)| tol.accepts(*x, *t))
+                same_shape(value, target) && got.iter().zip(&want).all(|(x, t)| tol.close(*x, *t))
             }
             Expect::Absent => *value == Value::Absent,
             Expect::Finite => *value != Value::Absent,

@@ -32,7 +32,7 @@ pub mod verdict;
 
 pub use case::Case;
 pub use catalogue::{cases, cases_for};
-pub use expect::{Bound, Expect, Tolerance};
+pub use expect::{Bound, Expect};
 pub use isolated::run_isolated;
 pub use runner::{DEFAULT_TIMEOUT, Outcome, run_case, run_cases};
 pub use value::Value;

@@ -8,6 +8,7 @@
 //! the BRDF code does.
 
 use crate::converge::{Estimate, Strategy};
+use crate::integrator::MisHeuristic;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::{Vec2, Vec3};
@@ -171,15 +172,6 @@ impl<T: Tasks> Strategy for Sampled<T> {
     }
 }
 
-/// How [`Mis`] weights its two samples (Veach and Guibas 1995).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Heuristic {
-    /// `w_a = p_a / (p_a + p_b)`.
-    Balance,
-    /// `w_a = p_a² / (p_a² + p_b²)`.
-    Power,
-}
-
 /// One cosine sample and one NDF sample per spp, combined by a MIS heuristic.
 pub struct Mis<T> {
     /// The implementation.
@@ -187,22 +179,22 @@ pub struct Mis<T> {
     /// The pixels.
     pub configs: Arc<Vec<Config>>,
     /// The weighting.
-    pub heuristic: Heuristic,
+    pub heuristic: MisHeuristic,
 }
 
 impl<T: Tasks> Strategy for Mis<T> {
     fn name(&self) -> &str {
         match self.heuristic {
-            Heuristic::Balance => "mis_balance",
-            Heuristic::Power => "mis_power",
+            MisHeuristic::Balance => "mis_balance",
+            MisHeuristic::Power => "mis_power",
         }
     }
 
     fn estimate(&self, spp: u32, seed: u64) -> anyhow::Result<Estimate> {
         let t = &self.tasks;
         let weight = |a: f32, b: f32| match self.heuristic {
-            Heuristic::Balance => ratio(a, a + b),
-            Heuristic::Power => ratio(a * a, a * a + b * b),
+            MisHeuristic::Balance => ratio(a, a + b),
+            MisHeuristic::Power => ratio(a * a, a * a + b * b),
         };
         Ok(estimate_each(&self.configs, spp, seed, |c, s| {
             let mut total = 0.0;

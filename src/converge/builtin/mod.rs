@@ -42,7 +42,8 @@ pub fn builtin<T: Tasks + Clone + Send + 'static>(name: &str, tasks: T) -> anyho
             })
         }
         "microfacet_albedo" => {
-            use microfacet_albedo::{Heuristic, Mis, Sampled, Technique};
+            use crate::integrator::MisHeuristic;
+            use microfacet_albedo::{Mis, Sampled, Technique};
             let configs = Arc::new(microfacet_albedo::configs());
             let reference = crate::implementation::catch_quietly(|| {
                 microfacet_albedo::reference(&tasks, &configs)
@@ -76,8 +77,8 @@ pub fn builtin<T: Tasks + Clone + Send + 'static>(name: &str, tasks: T) -> anyho
                     sampled(Technique::Uniform),
                     sampled(Technique::Cosine),
                     sampled(Technique::Ndf),
-                    mis(Heuristic::Balance),
-                    mis(Heuristic::Power),
+                    mis(MisHeuristic::Balance),
+                    mis(MisHeuristic::Power),
                 ],
             })
         }

@@ -20,3 +20,24 @@ pub enum Heuristic {
     #[default]
     Power,
 }
+
+/// A rule that combines two sampling strategies by multiple importance sampling (Veach and
+/// Guibas 1995): the scene format's `heuristic` under `strategy: mis`, and the convergence
+/// studies' MIS estimators. [`Heuristic`] adds the single-strategy weightings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MisHeuristic {
+    /// The balance heuristic: `w_a = p_a / (p_a + p_b)`.
+    Balance,
+    /// The power heuristic with exponent 2: `w_a = p_a² / (p_a² + p_b²)`.
+    Power,
+}
+
+impl From<MisHeuristic> for Heuristic {
+    fn from(h: MisHeuristic) -> Self {
+        match h {
+            MisHeuristic::Balance => Heuristic::Balance,
+            MisHeuristic::Power => Heuristic::Power,
+        }
+    }
+}

@@ -9,7 +9,7 @@ mod heuristic;
 mod segment;
 pub mod volpath;
 
-pub use heuristic::Heuristic;
+pub use heuristic::{Heuristic, MisHeuristic};
 pub use segment::{Bounce, DirectLight, Segment};
 
 use crate::geometry::Ray;

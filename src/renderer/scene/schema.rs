@@ -18,7 +18,7 @@ use super::values::{
     Asymmetry, Direction, FovDegrees, Ior, NonNegative, Point, Positive, Rgb, Roughness,
 };
 use crate::bsdf::{FresnelModel, HemisphereSampling};
-use crate::integrator::Heuristic;
+pub use crate::integrator::MisHeuristic;
 use serde::Deserialize;
 use serde_saphyr::Spanned;
 use std::collections::BTreeMap;
@@ -80,25 +80,6 @@ pub enum Strategy {
     Light,
     /// Both, combined by multiple importance sampling.
     Mis,
-}
-
-/// The weighting of `strategy: mis`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum MisHeuristic {
-    /// The balance heuristic.
-    Balance,
-    /// The power heuristic (exponent 2).
-    Power,
-}
-
-impl From<MisHeuristic> for Heuristic {
-    fn from(h: MisHeuristic) -> Self {
-        match h {
-            MisHeuristic::Balance => Heuristic::Balance,
-            MisHeuristic::Power => Heuristic::Power,
-        }
-    }
 }
 
 /// How shadow rays estimate the transmittance through media.

@@ -2,7 +2,8 @@
 //! normals below the horizon or with a cosine above one.
 
 use crate::stability::case::{Case, NON_NEGATIVE};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::inputs::cos_above_one;
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;

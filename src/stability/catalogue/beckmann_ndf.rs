@@ -3,7 +3,8 @@
 
 use super::aniso_ndf::DELTA_PEAK;
 use crate::stability::case::{Case, NON_NEGATIVE};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;
 use std::f64::consts::PI;

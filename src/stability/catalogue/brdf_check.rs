@@ -2,7 +2,8 @@
 
 use crate::sampling::Sampler;
 use crate::stability::case::{ANY, Case};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::value::Value;
 use crate::worksheet::{TaskId, Tasks};
 

@@ -2,7 +2,8 @@
 //! grazing outgoing directions, α = 0 and a cosine above one.
 
 use crate::stability::case::{Case, NON_NEGATIVE};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::inputs::cos_above_one;
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;

@@ -2,7 +2,8 @@
 //! returns 1, but it does return 1 − 2⁻²⁴) and pdf queries on and below the horizon.
 
 use crate::stability::case::{ANY, Case, NON_NEGATIVE};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::inputs::{U_MAX, cos_above_one};
 use crate::stability::summary::{max_nan, min_nan};
 use crate::stability::value::Value;

@@ -3,7 +3,8 @@
 //! that rounds above one.
 
 use crate::stability::case::{Case, UNIT_INTERVAL};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::inputs::{critical_angle_f32, errata_unit_vector, ulps_above_f32};
 use crate::worksheet::{TaskId, Tasks};
 

@@ -4,7 +4,8 @@
 
 use crate::bsdf::KajiyaKayParams;
 use crate::stability::case::{Case, NON_NEGATIVE};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::inputs::errata_unit_vector;
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;

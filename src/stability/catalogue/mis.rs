@@ -5,7 +5,8 @@
 use crate::integrator::Heuristic;
 use crate::sampling::Sampler;
 use crate::stability::case::{ANY, Case};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::scenes::{self, LIGHT_IN_THE_FLOOR_PLANE, MIRROR_UNDER_LIGHT, ON_THE_LIGHT};
 use crate::stability::summary::max_nan;
 use crate::stability::value::Value;

@@ -3,7 +3,8 @@
 //! tiny, or where `wi` is below the surface.
 
 use crate::stability::case::{ANY, Case, NON_NEGATIVE};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::inputs::U_MAX;
 use crate::stability::summary::{max_nan, min_nan};
 use crate::stability::value::Value;

@@ -3,7 +3,8 @@
 use crate::integrator::Segment;
 use crate::sampling::Sampler;
 use crate::stability::case::{Case, NON_NEGATIVE};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::scenes::{self, FURNACE};
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;

@@ -1,7 +1,8 @@
 //! Stability cases of the `reflect` task.
 
 use crate::stability::case::{Case, DIRECTION};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::inputs::errata_unit_vector;
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;

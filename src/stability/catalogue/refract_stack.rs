@@ -3,7 +3,8 @@
 
 use crate::optics::{LayerStack, Slab, StackReport};
 use crate::stability::case::{ANY, Case, DIRECTION};
-use crate::stability::expect::{Bound, Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::{Bound, Expect};
 use crate::stability::inputs::{
     critical_angle_deg_f64, critical_angle_f32, direction_xz, errata_unit_vector, ulps_above_f32,
     ulps_above_f64,

@@ -2,7 +2,8 @@
 //! tiny cosines, a Λ argument small enough to cancel in f32, and a cosine above one.
 
 use crate::stability::case::{Case, UNIT_INTERVAL};
-use crate::stability::expect::{Expect, Tolerance};
+use crate::grade::tolerance::Tolerance;
+use crate::stability::expect::Expect;
 use crate::stability::inputs::{cos_above_one, direction_xz};
 use crate::worksheet::{TaskId, Tasks};
 use glam::Vec3;
