@@ -292,10 +292,23 @@ pub const ROUGHNESS_SPREAD: Spread = Spread::Log {
 };
 
 /// The boundary of a roughness at 0 (a mirror).
-pub const ROUGHNESS_BOUNDARIES: &[Boundary] = &[Boundary {
+pub const ROUGHNESS_BOUNDARIES: &[Boundary] = &[MIRROR];
+
+/// The boundaries of a roughness that an NDF raises to [`crate::bsdf::MIN_ALPHA`] first (the
+/// texts say so): the mirror and that floor.
+pub const FLOORED_ROUGHNESS_BOUNDARIES: &[Boundary] = &[
+    MIRROR,
+    Boundary {
+        at: crate::bsdf::MIN_ALPHA as f64,
+        what: "the floor MIN_ALPHA that α is raised to",
+    },
+];
+
+/// A roughness of 0.
+const MIRROR: Boundary = Boundary {
     at: 0.0,
     what: "a mirror (α → 0)",
-}];
+};
 
 /// A cosine over [−1, 1] (a unit direction anywhere on the sphere) with the horizon and
 /// both poles as boundaries.
@@ -332,6 +345,17 @@ pub const fn roughness(
         .boundaries(ROUGHNESS_BOUNDARIES)
         .special(&[0.0, 1.0])
         .resolution(1e-6)
+}
+
+/// [`roughness`] of a function whose NDF raises α to [`crate::bsdf::MIN_ALPHA`] (the NDFs,
+/// and Cook-Torrance and the NDF sampler through them): that floor is a boundary too.
+pub const fn floored_roughness(
+    function: &'static str,
+    name: &'static str,
+    covers: &'static [&'static str],
+    value: fn(&Call) -> Option<f64>,
+) -> Param {
+    roughness(function, name, covers, value).boundaries(FLOORED_ROUGHNESS_BOUNDARIES)
 }
 
 /// The anisotropy `αx/αy` of a pair of roughnesses, with isotropy (1) as its boundary.
@@ -426,10 +450,10 @@ macro_rules! microfacet_domain {
                 at: -1.0,
                 what: "wo = −wi (no half vector)",
             }]),
-            $crate::grade::domain::roughness($function, "alpha_x", &["alpha_x"], |c| {
+            $crate::grade::domain::floored_roughness($function, "alpha_x", &["alpha_x"], |c| {
                 $of(c).map(|x| x.2 as f64)
             }),
-            $crate::grade::domain::roughness($function, "alpha_y", &["alpha_y"], |c| {
+            $crate::grade::domain::floored_roughness($function, "alpha_y", &["alpha_y"], |c| {
                 $of(c).map(|x| x.3 as f64)
             }),
             $crate::grade::domain::anisotropy($function, &["alpha_x", "alpha_y"], |c| {

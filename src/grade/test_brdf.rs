@@ -40,6 +40,9 @@ pub enum TestBrdf {
     /// `2/π` where `cos θi > cos θo`, else `1/π`: every pair with distinct cosines has the
     /// relative reciprocity gap exactly 1/2, however the pairs are drawn.
     Lopsided,
+    /// [`TestBrdf::Lopsided`] negated: `−2/π` where `cos θi > cos θo`, else `−1/π`. No
+    /// physical BRDF, but the relative gap is one of magnitudes, exactly 1/2 again.
+    NegativeLopsided,
     /// Lambert with albedo 1/2, but +∞ where `cos θi cos θo < 0.05`: symmetric, and equal
     /// both ways round where it is infinite, yet a value no test may call reciprocal or
     /// plausible.
@@ -63,6 +66,8 @@ impl TestBrdf {
             TestBrdf::NanOneWayRound => 0.5 * FRAC_1_PI,
             TestBrdf::Lopsided if wi.z > wo.z => 2.0 * FRAC_1_PI,
             TestBrdf::Lopsided => FRAC_1_PI,
+            TestBrdf::NegativeLopsided if wi.z > wo.z => -2.0 * FRAC_1_PI,
+            TestBrdf::NegativeLopsided => -FRAC_1_PI,
             TestBrdf::InfiniteNearGrazing if wi.z * wo.z < 0.05 => f32::INFINITY,
             TestBrdf::InfiniteNearGrazing => 0.5 * FRAC_1_PI,
         }
@@ -89,6 +94,7 @@ impl TestBrdf {
             TestBrdf::CosinePower { .. }
             | TestBrdf::NanNearGrazing
             | TestBrdf::NanOneWayRound
+            | TestBrdf::NegativeLopsided
             | TestBrdf::InfiniteNearGrazing => None,
         }
     }
@@ -107,6 +113,7 @@ impl TestBrdf {
             TestBrdf::NanNearGrazing => "Lambert 1/2, NaN where cos θi cos θo < 0.05".into(),
             TestBrdf::NanOneWayRound => "Lambert 1/2, NaN where cos θi > cos θo".into(),
             TestBrdf::Lopsided => "2/π where cos θi > cos θo, else 1/π".into(),
+            TestBrdf::NegativeLopsided => "−2/π where cos θi > cos θo, else −1/π".into(),
             TestBrdf::InfiniteNearGrazing => "Lambert 1/2, +∞ where cos θi cos θo < 0.05".into(),
         }
     }

@@ -2,7 +2,7 @@
 
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
-use crate::grade::domain::{Draw, Param, anisotropy, cos_z, cosine, ratio, roughness};
+use crate::grade::domain::{Draw, Param, anisotropy, cos_z, cosine, ratio, floored_roughness};
 use crate::grade::power::Declared;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
@@ -74,11 +74,11 @@ pub const DOMAIN: &[Param] = &[
     cosine("aniso_ndf", "cos θh", &["h"], |c| {
         of(c).map(|x| cos_z(x.0))
     }),
-    roughness("aniso_ndf", "alpha_x", &["alpha_x"], |c| {
+    floored_roughness("aniso_ndf", "alpha_x", &["alpha_x"], |c| {
         of(c).map(|x| x.1 as f64)
     })
     .special(ALPHA_TRAPS),
-    roughness("aniso_ndf", "alpha_y", &["alpha_y"], |c| {
+    floored_roughness("aniso_ndf", "alpha_y", &["alpha_y"], |c| {
         of(c).map(|x| x.2 as f64)
     })
     .special(ALPHA_TRAPS),

@@ -2,8 +2,10 @@
 
 use super::{CaseInput, EstimatorSpec};
 use crate::grade::call::Call;
-use crate::grade::domain::{Draw, Param, cos_z, cosine, roughness};
+use crate::grade::case::Rule;
+use crate::grade::domain::{Draw, Param, cos_z, cosine, floored_roughness};
 use crate::grade::power::Declared;
+use crate::grade::tolerance::Tolerance;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::Vec3;
@@ -23,13 +25,23 @@ fn at_degrees(deg: f32) -> Vec3 {
 }
 
 fn ndf(name: &str, h: Vec3, alpha: f32) -> CaseInput {
-    CaseInput::new(name, Call::BeckmannNdf { h, alpha }).note(D)
+    CaseInput::new(name, Call::BeckmannNdf { h, alpha })
+        .rule(Rule::Close(TAIL))
+        .note(D)
 }
+
+/// The tolerance of a Beckmann density: its tail falls through thirty orders of magnitude
+/// before it underflows (3.7e-35 at the text's own θh = 42.5°, α = 0.1), so the absolute
+/// part is the smallest normal f32, not [`Tolerance::F32`]'s 1e-5, which would take any
+/// tail for 0.
+const TAIL: Tolerance = Tolerance::new(1.2e-38, 2e-4);
 
 pub fn fixed() -> Vec<CaseInput> {
     vec![
         ndf("worksheet §3.4.3: h = n, α = 0.1", Vec3::Z, 0.1),
         ndf("errata §3.4.3: θh = 30°, α = 0.1", at_degrees(30.0), 0.1),
+        ndf("errata §3.4.3: θh = 42.5°, α = 0.1", at_degrees(42.5), 0.1)
+            .note("far in the tail the density is tiny, not 0"),
         ndf("θh = 30°, α = 0.5", at_degrees(30.0), 0.5),
         ndf("errata: grazing h", Vec3::X, 0.1).note("at cos θh = 0 return 0, not 0 · ∞"),
         ndf("below the surface", at_degrees(120.0), 0.3).note("h below the surface has density 0"),
@@ -51,7 +63,7 @@ pub const DOMAIN: &[Param] = &[
         of(c).map(|x| cos_z(x.0))
     })
     .special(&[1e-12]),
-    roughness("beckmann_ndf", "alpha", &["alpha"], |c| {
+    floored_roughness("beckmann_ndf", "alpha", &["alpha"], |c| {
         of(c).map(|x| x.1 as f64)
     }),
 ];

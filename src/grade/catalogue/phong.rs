@@ -116,6 +116,13 @@ pub fn fixed() -> Vec<CaseInput> {
         )
         .rule(Rule::Close(Tolerance::F32))
         .note(GAP),
+        gap(
+            "the gap of a negative BRDF twice as large one way round is exactly 1/2",
+            TestBrdf::NegativeLopsided,
+            9,
+        )
+        .rule(Rule::Close(Tolerance::F32))
+        .note("the gap compares magnitudes: |f(a,b) − f(b,a)| / max(|f(a,b)|, |f(b,a)|)"),
     ]
 }
 

@@ -2,7 +2,7 @@
 
 use super::CaseInput;
 use crate::grade::call::Call;
-use crate::grade::domain::{Draw, Param, cos_between, length, upper_cosine};
+use crate::grade::domain::{Draw, Param, cos_between, cosine, length};
 use crate::sampling::Sampler;
 use glam::Vec3;
 
@@ -50,7 +50,7 @@ pub fn fixed() -> Vec<CaseInput> {
 /// the normal; `n` any non-zero vector along the normal, and `wo` of any length (the
 /// result keeps it).
 pub const DOMAIN: &[Param] = &[
-    upper_cosine("reflect", "cos(wo, n)", &["wo", "n"], |c| match c {
+    cosine("reflect", "cos(wo, n)", &["wo", "n"], |c| match c {
         Call::Reflect { wo, n } => Some(cos_between(*wo, *n)),
         _ => None,
     }),
