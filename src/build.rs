@@ -1,41 +1,55 @@
-//! Embeds the grader's expected data (tests/snapshots/expected/*.snap, written from the
+//! Embeds the grader's expected data (tasks/<task>/expected.snap, written from the
 //! reference by tests/instructor/expected.rs) and reference renders
 //! (tests/snapshots/renders/*.exr, written by tests/instructor/renders.rs) into the binary,
 //! so `pbrlab grade` needs no such files at run time and works in the student handout,
 //! which has no solutions.
 
 use std::fmt::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn main() {
+    // One folder per task, each with its expected.snap when it has public cases (a
+    // directory is watched whole).
+    let tasks = Path::new("tasks");
+    println!("cargo::rerun-if-changed={}", tasks.display());
+    let mut expected: Vec<(String, PathBuf)> = Vec::new();
+    for folder in std::fs::read_dir(tasks).into_iter().flatten().flatten() {
+        let file = folder.path().join("expected.snap");
+        if file.is_file() {
+            let task = folder.file_name().to_string_lossy().into_owned();
+            expected.push((task, file));
+        }
+    }
     embed(
-        "../tests/snapshots/expected",
-        "snap",
+        "tasks/<task>/expected.snap",
+        expected,
         "expected_files.rs",
         "FILES",
         false,
     );
+    let renders = Path::new("../tests/snapshots/renders");
+    println!("cargo::rerun-if-changed={}", renders.display());
+    let renders = std::fs::read_dir(renders)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "exr"))
+        .filter_map(|p| Some((p.file_stem()?.to_str()?.to_owned(), p)))
+        .collect();
     embed(
-        "../tests/snapshots/renders",
-        "exr",
+        "tests/snapshots/renders/*.exr",
+        renders,
         "render_files.rs",
         "RENDER_FILES",
         true,
     );
 }
 
-/// Writes `OUT_DIR/<out>`: a static `name` listing `(file stem, contents)` of every `*.ext`
-/// file in `dir` (`include_bytes!` when `binary`, else `include_str!`).
-fn embed(dir: &str, ext: &str, out: &str, name: &str, binary: bool) {
-    let dir = Path::new(dir);
-    println!("cargo::rerun-if-changed={}", dir.display());
-    let mut files: Vec<_> = std::fs::read_dir(dir)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == ext))
-        .collect();
+/// Writes `OUT_DIR/<out>`: a static `name` listing `(key, contents)` of every file of
+/// `files` (`include_bytes!` when `binary`, else `include_str!`), by key; `what` names
+/// the files in the static's doc.
+fn embed(what: &str, mut files: Vec<(String, PathBuf)>, out: &str, name: &str, binary: bool) {
     files.sort();
     let (ty, include) = if binary {
         ("&[u8]", "include_bytes")
@@ -43,14 +57,9 @@ fn embed(dir: &str, ext: &str, out: &str, name: &str, binary: bool) {
         ("&str", "include_str")
     };
     let mut code = format!(
-        "/// `(file stem, contents)` of every `{}/*.{ext}` file.\npub(crate) static {name}: &[(&str, {ty})] = &[\n",
-        dir.display()
+        "/// `(key, contents)` of every `{what}` file.\npub(crate) static {name}: &[(&str, {ty})] = &[\n"
     );
-    for path in files {
-        let stem = path
-            .file_stem()
-            .and_then(|s| s.to_str())
-            .unwrap_or_default();
+    for (stem, path) in files {
         let absolute = std::fs::canonicalize(&path).expect("readable data file");
         writeln!(
             code,

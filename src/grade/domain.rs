@@ -1,10 +1,10 @@
 //! Declared domains: for every parameter of a task function (or a quantity derived from
 //! several, such as `sin²θt`), the range its exercise text allows, the values it names as
 //! allowed, and the boundaries where the contract changes behaviour. Each task's
-//! catalogue file declares its own ([`super::catalogue`]); the value cases are drawn from
-//! them ([`Draw`]) with a bias toward the boundaries, and the boundary-mutation score
-//! (`tests/instructor/domain.rs`) makes a wrong variant of the reference for every band
-//! declared here.
+//! `src/tasks/<task>/cases.rs` declares its own ([`super::catalogue`]); the value cases
+//! are drawn from them ([`Draw`]) with a bias toward the boundaries, and the
+//! boundary-mutation score (`tests/instructor/domain.rs`) makes a wrong variant of the
+//! reference for every band declared here.
 
 use super::call::Call;
 use crate::sampling::Sampler;

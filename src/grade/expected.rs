@@ -2,7 +2,7 @@
 //! distribution of every sampler, stored per task so the grader works without solutions.
 //!
 //! # Storage
-//! One insta snapshot per task, `tests/snapshots/expected/<task>.snap`, whose body is the
+//! One insta snapshot per task, `src/tasks/<task>/expected.snap`, whose body is the
 //! task's [`TaskData`] as JSON. The instructor test `tests/instructor/expected.rs` computes
 //! it from the reference ([`generate`]) and compares it with the stored file through a
 //! tolerance comparator, so a change in the reference beyond rounding fails CI until the
@@ -88,9 +88,8 @@ pub fn load_all() -> anyhow::Result<BTreeMap<TaskId, TaskData>> {
         let task = TaskId::parse(name)
             .ok()
             .filter(|t| t.name() == *name)
-            .ok_or_else(|| anyhow!("tests/snapshots/expected/{name}.snap: no task `{name}`"))?;
-        let data =
-            parse(task, text).with_context(|| format!("tests/snapshots/expected/{name}.snap"))?;
+            .ok_or_else(|| anyhow!("src/tasks/{name}/expected.snap: no task `{name}`"))?;
+        let data = parse(task, text).with_context(|| format!("src/tasks/{name}/expected.snap"))?;
         all.insert(task, data);
     }
     Ok(all)

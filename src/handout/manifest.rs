@@ -3,17 +3,19 @@
 //!
 //! Left out: `solutions/`, build output and local state, instructor tests (files named
 //! `instructor_*`, and any test or bench that uses the reference: it would not build
-//! without it, and may contain correct code), support folders only those tests use, and
-//! insta snapshots of tests that are left out. The grader's data (`tests/snapshots/expected/`
-//! and `tests/snapshots/renders/`) stays: it holds the public cases and the reference
-//! renders only, which is what lets the handout grade without solutions.
+//! without it, and may contain correct code), support folders only those tests use, the
+//! tests' variants of each task (`src/tasks/<task>/variants.rs`: they hold correct
+//! implementations), and insta snapshots of tests that are left out. The grader's data
+//! stays (each task's `src/tasks/<task>/expected.snap` and `tests/snapshots/renders/`): it
+//! holds the public cases and the reference renders only, which is what lets the handout
+//! grade without solutions.
 
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 
-/// Folders of `tests/snapshots/` that hold the grader's data (the public expected outputs
-/// and the reference renders), which the handout needs to grade.
-const GRADER_DATA: &[&str] = &["expected", "renders"];
+/// Folders of `tests/snapshots/` that hold the grader's data (the reference renders),
+/// which the handout needs to grade.
+const GRADER_DATA: &[&str] = &["renders"];
 
 /// Top-level entries copied into the handout (when present).
 const TOP_LEVEL: &[&str] = &[
@@ -30,6 +32,15 @@ const TOP_LEVEL: &[&str] = &[
     "LICENSE-MIT",
     "LICENSE-APACHE",
 ];
+
+/// True for a task's `variants.rs` (`src/tasks/<task>/variants.rs`): the implementations the
+/// instructor tests grade the grader with, correct ones among them. Only those tests
+/// include it.
+fn is_test_variants(file: &Path) -> bool {
+    let parts: Vec<_> = file.components().map(|c| c.as_os_str()).collect();
+    matches!(parts.as_slice(), [src, tasks, _, name]
+        if *src == "src" && *tasks == "tasks" && *name == "variants.rs")
+}
 
 /// The files of the handout, relative to the repository root, and its Cargo.toml.
 #[derive(Clone, Debug)]
@@ -230,6 +241,7 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
             files.push(PathBuf::from(entry));
         }
     }
+    files.retain(|f| !is_test_variants(f));
     let (tests, mut rest): (Vec<_>, Vec<_>) =
         files.into_iter().partition(|f| f.starts_with("tests"));
     // benches/ is one package: kept whole when none of its sources needs the reference.
@@ -273,6 +285,18 @@ mod tests {
         assert!(out.contains("members = [\n    \"src\",\n]"), "{out}");
         assert!(!out.contains("\"tasks\""), "{out}");
         assert!(out.contains("name = \"render\""), "{out}");
+    }
+
+    #[test]
+    fn the_tests_variants_of_a_task_are_recognised() {
+        assert!(is_test_variants(Path::new(
+            "src/tasks/smith_g1/variants.rs"
+        )));
+        assert!(!is_test_variants(Path::new("src/tasks/smith_g1/cases.rs")));
+        assert!(!is_test_variants(Path::new("src/tasks/variants.rs")));
+        assert!(!is_test_variants(Path::new(
+            "tests/tasks/smith_g1/variants.rs"
+        )));
     }
 
     #[test]

@@ -179,7 +179,7 @@ fn run_builtin<T: pbrlab::worksheet::Tasks + Clone + Send + 'static>(
 #[cfg(feature = "solutions")]
 #[test]
 fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_flattens() {
-    use crate::stability_support::{Flaw, flawed};
+    use crate::support::variants::naive_named;
     use pbrlab_solutions::TASKS as Reference;
 
     let summaries = run_builtin("microfacet_albedo", Reference, 1024);
@@ -194,7 +194,11 @@ fn microfacet_albedo_converges_to_its_quadrature_and_a_pdf_without_the_jacobian_
         final_of("mis_balance") < final_of("ndf") && final_of("mis_balance") < final_of("uniform")
     );
 
-    let summaries = run_builtin("microfacet_albedo", flawed(Flaw::NdfPdfNoJacobian), 1024);
+    let summaries = run_builtin(
+        "microfacet_albedo",
+        naive_named("`ndf_pdf` without the reflection Jacobian 1/(4 wo·h)"),
+        1024,
+    );
     for s in &summaries {
         let uses_ndf_pdf = !matches!(s.strategy.as_str(), "uniform" | "cosine");
         assert_eq!(
@@ -288,7 +292,7 @@ fn repeated_runs_give_intervals_and_a_bias_test_that_flags_only_the_biased_strat
 #[cfg(feature = "solutions")]
 #[test]
 fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
-    use crate::stability_support::{Flaw, flawed};
+    use crate::support::variants::naive_named;
     use pbrlab::converge::scene_study::{ReferenceSource, scene_study};
     use pbrlab::scene::LoadOptions;
     use pbrlab_solutions::TASKS as Reference;
@@ -342,7 +346,7 @@ fn a_scene_study_caches_its_reference_and_catches_a_biased_mis() {
     // every strategy flattens.
     let study = scene_study(
         &furnace,
-        flawed(Flaw::MisUnguarded),
+        naive_named("`mis` converts pdfs and weights delta samples without guards"),
         &base,
         source(),
         out.path(),

@@ -311,11 +311,11 @@ fn the_value_cases_catch_every_boundary_mutant() {
 
 /// Every correct alternative passes the value cases (public and hidden) of `seeds`.
 fn alternatives_pass(seeds: std::ops::Range<u64>) {
-    use crate::support::different;
+    use crate::support::variants;
     use pbrlab::grade::values::run;
     let mut failures = Vec::new();
     for task in TaskId::ALL {
-        let variants: Vec<_> = different::catalogue()
+        let variants: Vec<_> = variants::different()
             .into_iter()
             .filter(|d| d.task == task)
             .collect();

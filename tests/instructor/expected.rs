@@ -1,4 +1,4 @@
-//! Instructor test: the grader's stored expected data (tests/snapshots/expected/<task>.snap)
+//! Instructor test: the grader's stored expected data (src/tasks/<task>/expected.snap)
 //! is what the reference computes today.
 //!
 //! Each task's data is generated from the reference and compared with the stored snapshot by
@@ -42,7 +42,6 @@ impl Comparator for TolerantJson {
 fn stored_expected_data_is_the_references() {
     install();
     let mut settings = insta::Settings::clone_current();
-    settings.set_snapshot_path("../snapshots/expected");
     settings.set_prepend_module_to_snapshot(false);
     settings.set_omit_expression(true);
     settings.set_comparator(Box::new(TolerantJson));
@@ -54,7 +53,9 @@ fn stored_expected_data_is_the_references() {
         }
         let data = generate(task).unwrap_or_else(|e| panic!("{task}: {e:#}"));
         let json = serde_json::to_string_pretty(&data).expect("serialisable");
-        settings.bind(|| insta::assert_snapshot!(task.name(), json));
+        // The task's folder, from this file's (tests/instructor/).
+        settings.set_snapshot_path(format!("../../src/tasks/{task}"));
+        settings.bind(|| insta::assert_snapshot!("expected", json));
     }
 }
 

@@ -2,7 +2,7 @@
 //! `none` holds no expected value in any format, a hidden case is shown at no level, and
 //! the points are the same at every level.
 
-use crate::support::{grade, outcome, wrong};
+use crate::support::{grade, outcome, variants};
 use pbrlab::grade::feedback::{Feedback, redact};
 use pbrlab::grade::report::{Detail, gradescope, prairielearn, text, write_html};
 use pbrlab::grade::runner::{GradeOptions, prepare};
@@ -54,7 +54,7 @@ fn failing_report() -> GradeReport {
         ..GradeOptions::default()
     })
     .expect("inputs");
-    let catalogue = wrong::catalogue();
+    let catalogue = variants::wrong();
     let mut tasks = Vec::new();
     for task in TaskId::ALL {
         let Some(variant) = catalogue.iter().find(|v| v.task == task) else {

@@ -3,7 +3,7 @@
 //! but different implementation passes. In-process (isolation is tested in
 //! instructor_isolation.rs). Not part of the student handout: it contains correct code.
 
-use crate::support::{different, grade, graded_tasks, inputs, messages, wrong};
+use crate::support::{grade, graded_tasks, inputs, messages, variants};
 use pbrlab::grade::checks::WorkerInput;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
@@ -74,7 +74,7 @@ fn depends_on(t: TaskId, on: TaskId) -> bool {
 fn every_wrong_implementation_fails_its_own_task_and_only_it() {
     let inputs = inputs(1);
     let mut report = Vec::new();
-    for w in wrong::catalogue() {
+    for w in variants::wrong() {
         for task in std::iter::once(w.task).chain(dependents(w.task)) {
             let student = student_tasks_for(task, ImplChoice::Student, &[]);
             let (status, points, checks) = grade(&w.patch.only(student), task, &inputs[&task]);
@@ -185,7 +185,7 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
             "rough conductor",
         ),
     ];
-    let catalogue = wrong::catalogue();
+    let catalogue = variants::wrong();
     for (name, configuration) in cases {
         let w = catalogue
             .iter()
@@ -207,7 +207,7 @@ fn integrator_bugs_fail_the_estimator_of_the_configuration_they_hide_in() {
 fn every_correct_but_different_implementation_passes() {
     let inputs = inputs(1);
     let mut report = Vec::new();
-    for d in different::catalogue() {
+    for d in variants::different() {
         let (status, _, checks) = grade(&d.patch, d.task, &inputs[&d.task]);
         if status != TaskStatus::Passed {
             report.push(format!(
@@ -224,7 +224,7 @@ fn every_correct_but_different_implementation_passes() {
 #[test]
 fn a_wrong_dependency_is_blamed_on_its_own_task() {
     let inputs = inputs(1);
-    let wrong_g1 = wrong::catalogue()
+    let wrong_g1 = variants::wrong()
         .into_iter()
         .find(|w| w.name == "Λ without the 1/2")
         .expect("a wrong smith_g1");
@@ -246,7 +246,7 @@ fn a_wrong_dependency_is_blamed_on_its_own_task() {
 fn failure_messages_name_the_case_input_and_cause() {
     let inputs = inputs(1);
     let task = TaskId::FresnelSchlick;
-    let w = wrong::catalogue()
+    let w = variants::wrong()
         .into_iter()
         .find(|w| w.name.contains("cos θi from dense"))
         .expect("the wrong-cosine Schlick");
@@ -258,7 +258,7 @@ fn failure_messages_name_the_case_input_and_cause() {
         ),
         "{text}"
     );
-    let factor_4 = wrong::catalogue()
+    let factor_4 = variants::wrong()
         .into_iter()
         .find(|w| w.name == "missing factor 4")
         .expect("factor 4")
@@ -301,7 +301,7 @@ fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() 
             .iter()
             .any(|c| c.visibility == pbrlab::grade::verdict::Visibility::Hidden)
     );
-    let w = wrong::catalogue()
+    let w = variants::wrong()
         .into_iter()
         .find(|w| w.task == task)
         .unwrap();

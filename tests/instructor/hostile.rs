@@ -33,7 +33,7 @@ fn breach(what: impl std::fmt::Display) {
 fn read_answers() {
     let root = pbrlab::repository_root();
     for file in [
-        root.join("tests/snapshots/expected/smith_g1.snap"),
+        root.join("src/tasks/smith_g1/expected.snap"),
         root.join("solutions/smith_g1.rs"),
         root.join("Cargo.toml"),
         PathBuf::from("/proc/self/exe"),
@@ -64,7 +64,7 @@ fn write_outside() {
     let new_files = [
         canary.with_extension("new"),
         root.join("scenes/breach.yaml"),
-        root.join("tests/snapshots/expected/breach.snap"),
+        root.join("src/tasks/smith_g1/breach.snap"),
         std::env::current_exe()
             .unwrap_or_default()
             .with_file_name("breach"),
@@ -513,21 +513,27 @@ fn a_result_without_outputs_fails_every_check_even_with_the_nonce() {
     }
 }
 
-/// Pieces of every stored expected-data file and reference render: the middle 64 bytes.
+/// Pieces of every stored expected-data file (`src/tasks/<task>/expected.snap`) and
+/// reference render (`tests/snapshots/renders/`): the middle 64 bytes.
 fn stored_answers() -> Vec<(String, Vec<u8>)> {
-    let root = pbrlab::repository_root().join("tests/snapshots");
-    ["expected", "renders"]
-        .iter()
-        .flat_map(|dir| {
-            std::fs::read_dir(root.join(dir))
-                .expect("stored data")
-                .flatten()
-        })
-        .map(|entry| {
-            let bytes = std::fs::read(entry.path()).expect("readable");
+    let root = pbrlab::repository_root();
+    let expected = std::fs::read_dir(root.join("src/tasks"))
+        .expect("the tasks' folders")
+        .flatten()
+        .map(|task| task.path().join("expected.snap"))
+        .filter(|file| file.is_file());
+    let renders = std::fs::read_dir(root.join("tests/snapshots/renders"))
+        .expect("stored renders")
+        .flatten()
+        .map(|entry| entry.path());
+    let all: Vec<_> = expected.chain(renders).collect();
+    assert!(all.len() > 10, "too few stored files: {all:?}");
+    all.into_iter()
+        .map(|path| {
+            let bytes = std::fs::read(&path).expect("readable");
             let middle = bytes.len() / 2;
             let piece = bytes[middle..(middle + 64).min(bytes.len())].to_vec();
-            (entry.file_name().to_string_lossy().into_owned(), piece)
+            (path.display().to_string(), piece)
         })
         .collect()
 }

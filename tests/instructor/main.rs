@@ -9,12 +9,11 @@
 //!   `converge`;
 //! - the reference renderer against closed forms: `reference_values`, `render_*`.
 //!
-//! Support code shared by the modules: `support` (the reference with functions replaced),
-//! `stability_support` (deliberately naive functions), `shipped_stubs`.
+//! Support code shared by the modules: `support` (the reference with functions replaced,
+//! and each task's variants from `src/tasks/<task>/variants.rs`), `shipped_stubs`.
 #![cfg(feature = "solutions")]
 
 mod shipped_stubs;
-mod stability_support;
 mod support;
 
 mod autograder;

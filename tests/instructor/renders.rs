@@ -51,7 +51,7 @@ fn stored_reference_renders_agree_with_fresh_ones() {
 
 #[test]
 fn a_wrong_path_tracer_fails_the_render_check() {
-    let wrong = crate::support::wrong::catalogue()
+    let wrong = crate::support::variants::wrong()
         .into_iter()
         .find(|w| w.name == "emission counted twice")
         .expect("the double-counting slip");

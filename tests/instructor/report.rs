@@ -3,7 +3,7 @@
 //! (loaded), the z-map legend and a sampling histogram; a screenshot is left in the
 //! target folder for people to look at. Not part of the student handout.
 
-use crate::support::{grade, inputs, wrong};
+use crate::support::{grade, inputs, variants};
 use pbrlab::grade::report::write_html;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
@@ -64,7 +64,7 @@ fn headless(browser: &Path, profile: &Path, page: &Path, args: &[&str]) -> (Stri
 /// render check fails, with its pictures) and whose cosine sampler draws uniform
 /// directions (the sampling check fails, with its histogram).
 fn failing_report(dir: &Path) -> PathBuf {
-    let catalogue = wrong::catalogue();
+    let catalogue = variants::wrong();
     let find = |name: &str| {
         catalogue
             .iter()

@@ -8,10 +8,8 @@ use pbrlab_exercises::TASKS as Student;
 use std::time::Duration;
 #[cfg(feature = "solutions")]
 use {
-    crate::stability_support::{Flaw, flawed},
-    pbrlab::stability::cases_for,
-    pbrlab::worksheet::TaskId,
-    std::collections::BTreeMap,
+    crate::support::patch::Patch, crate::support::variants, pbrlab::stability::cases_for,
+    pbrlab::task_set::TaskSet, pbrlab::worksheet::TaskId, std::collections::BTreeMap,
 };
 
 /// Far longer than any case takes; only the hang test uses a short limit.
@@ -27,12 +25,20 @@ fn run_all<T: Tasks + Clone + Send + 'static>(
 
 /// The cases that did not pass, with their verdicts.
 #[cfg(feature = "solutions")]
-fn failures(flaw: Flaw) -> BTreeMap<&'static str, Verdict> {
-    run_all(flawed(flaw), &cases(), TIMEOUT)
+fn failures(imp: Patch) -> BTreeMap<&'static str, Verdict> {
+    run_all(imp, &cases(), TIMEOUT)
         .into_iter()
         .filter(|o| o.verdict != Verdict::Pass)
         .map(|o| (o.case, o.verdict))
         .collect()
+}
+
+/// The reference with `task`'s functions replaced as `set` says, in force for every task.
+#[cfg(feature = "solutions")]
+fn patched(task: TaskId, set: impl FnOnce(&mut Patch)) -> Patch {
+    let mut patch = Patch::new(task).only(TaskSet::all());
+    set(&mut patch);
+    patch
 }
 
 fn table(outcomes: &[Outcome]) -> String {
@@ -89,168 +95,28 @@ fn the_reference_passes_every_case() {
 
 #[cfg(feature = "solutions")]
 #[test]
-fn the_flawed_wrapper_without_a_flaw_is_the_reference() {
-    let failed = failures(Flaw::None);
+fn a_patch_that_replaces_nothing_is_the_reference() {
+    let failed = failures(Patch::new(TaskId::Reflect).only(TaskSet::all()));
     assert!(failed.is_empty(), "{failed:?}");
-}
-
-/// Each naive implementation and exactly the cases it must fail.
-#[cfg(feature = "solutions")]
-fn naive_expectations() -> Vec<(Flaw, Vec<(&'static str, Verdict)>)> {
-    use Verdict::*;
-    vec![
-        (
-            Flaw::ReflectUnnormalised,
-            vec![("reflect/non_unit_normal", OutOfRange)],
-        ),
-        (
-            Flaw::UnguardedSnell,
-            vec![
-                ("refract/at_critical_f32", NaN),
-                ("refract/past_critical_2ulp_f32", NaN),
-                ("refract_stack/past_critical_2ulp_f64", NaN),
-                // The f32 Schlick inside the stack meets the critical angle too: at θc
-                // itself, and where a ray that entered the slab at 90° leaves it.
-                ("refract_stack/at_critical_f64", NaN),
-                ("refract_stack/grazing_slab", NaN),
-                ("fresnel_schlick/tir_45deg", NaN),
-                ("fresnel_schlick/at_critical_f32", NaN),
-                ("fresnel_schlick/past_critical_2ulp_f32", NaN),
-            ],
-        ),
-        (
-            Flaw::CriticalAngleAsin,
-            vec![
-                ("critical_angle/into_denser", NaN),
-                ("critical_angle/equal_indices", WrongValue),
-            ],
-        ),
-        (
-            Flaw::SchlickR0Everywhere,
-            vec![
-                ("fresnel_schlick/equal_indices_60deg", WrongValue),
-                ("fresnel_schlick/equal_indices_80deg", WrongValue),
-                ("fresnel_schlick/equal_indices_89deg", WrongValue),
-                ("fresnel_schlick/dense_to_less_40deg", WrongValue),
-                ("fresnel_schlick/tir_45deg", WrongValue),
-                ("fresnel_schlick/at_critical_f32", WrongValue),
-                ("fresnel_schlick/past_critical_2ulp_f32", WrongValue),
-            ],
-        ),
-        (
-            Flaw::CosinePdfSigned,
-            vec![("cosine_pdf/below_horizon", OutOfRange)],
-        ),
-        (
-            Flaw::SmithNoChi,
-            vec![
-                ("smith_g1/back_facing", OutOfRange),
-                ("smith_g1/grazing_alpha_zero", NaN),
-            ],
-        ),
-        (
-            Flaw::HalfVectorUnguarded,
-            vec![
-                ("cook_torrance/opposite_normal", NaN),
-                ("cook_torrance/opposite_tilted", NaN),
-                ("cook_torrance/horizon", NaN),
-            ],
-        ),
-        (
-            Flaw::CancellingGgx,
-            vec![
-                ("aniso_ndf/alpha_1e-3_peak", WrongValue),
-                ("aniso_ndf/alpha_1e-4_peak", Inf),
-                ("aniso_ndf/below_horizon", WrongValue),
-                ("aniso_ndf/alpha_zero_peak", NaN),
-                ("cook_torrance/alpha_zero_specular", NaN),
-                ("ndf_pdf/alpha_1e-4_mirror", Inf),
-            ],
-        ),
-        (
-            Flaw::PhongUnclamped,
-            vec![
-                ("phong/fractional_exponent_negative_lobe", NaN),
-                ("phong/even_exponent_negative_lobe", WrongValue),
-            ],
-        ),
-        (
-            Flaw::PhongPowerByLogarithm,
-            vec![("phong/exponent_zero_behind_the_mirror", NaN)],
-        ),
-        (
-            Flaw::GapZeroOverZero,
-            vec![
-                ("reciprocity_gap/zero_brdf", NaN),
-                ("reciprocity_gap/no_pairs", Inf),
-                ("brdf_check/zero_brdf", NaN),
-            ],
-        ),
-        (
-            Flaw::SheetKajiyaKay,
-            vec![
-                ("kajiya_kay/wi_along_tangent", NaN),
-                ("kajiya_kay/mirror_cone", OutOfRange),
-                ("kajiya_kay/tangent_dot_above_one", NaN),
-                ("kajiya_kay/exponent_zero_off_the_cone", WrongValue),
-                ("kajiya_kay/fractional_exponent_negative_cone", WrongValue),
-                ("kajiya_kay/highlight_underflow", WrongValue),
-            ],
-        ),
-        (
-            Flaw::BeckmannUnguarded,
-            vec![
-                ("beckmann_ndf/horizon", NaN),
-                ("beckmann_ndf/cos_1e-12", NaN),
-                ("beckmann_ndf/below_horizon", WrongValue),
-                ("beckmann_ndf/alpha_zero_peak", NaN),
-                ("beckmann_ndf/alpha_zero_off_peak", NaN),
-            ],
-        ),
-        (
-            Flaw::NdfPdfUnguarded,
-            vec![("ndf_pdf/opposite", NaN), ("ndf_pdf/wi_below", WrongValue)],
-        ),
-        (
-            Flaw::PathTraceNoDepthGuard,
-            vec![("path_trace/depth_zero", WrongValue)],
-        ),
-        (
-            Flaw::MisUnguarded,
-            vec![
-                ("mis/delta_bsdf", WrongValue),
-                ("mis/light_edge_on", NaN),
-                ("mis/shading_point_on_the_light", NaN),
-            ],
-        ),
-        (
-            Flaw::DeltaTrackingSheet,
-            vec![
-                ("delta_tracking/zero_majorant", WrongValue),
-                ("delta_tracking/nan_majorant", WrongValue),
-                ("delta_tracking/empty_medium", WrongValue),
-                ("delta_tracking/empty_segment", WrongValue),
-            ],
-        ),
-        (
-            Flaw::NdfPdfNoJacobian,
-            vec![
-                ("ndf_pdf/grazing_pair", WrongValue),
-                ("ndf_pdf/alpha_1e-4_mirror", WrongValue),
-            ],
-        ),
-    ]
 }
 
 #[cfg(feature = "solutions")]
 #[test]
 fn each_naive_implementation_fails_exactly_its_cases() {
     let mut report = String::new();
-    for (flaw, expected) in naive_expectations() {
-        let expected: BTreeMap<&str, Verdict> = expected.into_iter().collect();
-        let got = failures(flaw);
+    let all = variants::naive();
+    assert!(
+        all.len() >= TaskId::ALL.len(),
+        "too few naive implementations"
+    );
+    for naive in all {
+        let expected: BTreeMap<&str, Verdict> = naive.fails.into_iter().collect();
+        let got = failures(naive.patch);
         if got != expected {
-            report += &format!("{flaw:?}:\n  expected {expected:?}\n  got      {got:?}\n");
+            report += &format!(
+                "{}:\n  expected {expected:?}\n  got      {got:?}\n",
+                naive.name
+            );
         }
     }
     assert!(report.is_empty(), "{report}");
@@ -261,7 +127,14 @@ fn each_naive_implementation_fails_exactly_its_cases() {
 fn code_that_never_returns_is_reported_as_a_hang() {
     let start = std::time::Instant::now();
     let outcomes = run_all(
-        flawed(Flaw::SmithHangs),
+        patched(TaskId::SmithG1, |p| {
+            p.smith_g1 = Some(|_, _| {
+                loop {
+                    // Sleeps rather than spins, so the abandoned thread costs no CPU.
+                    std::thread::sleep(Duration::from_secs(3600));
+                }
+            })
+        }),
         &cases_for(TaskId::SmithG1),
         Duration::from_millis(150),
     );
@@ -281,7 +154,9 @@ fn code_that_never_returns_is_reported_as_a_hang() {
 #[test]
 fn a_panic_is_reported_with_its_message() {
     let outcomes = run_all(
-        flawed(Flaw::ReflectPanics),
+        patched(TaskId::Reflect, |p| {
+            p.reflect = Some(|_, _| panic!("index out of bounds: the len is 3 but the index is 3"))
+        }),
         &cases_for(TaskId::Reflect),
         TIMEOUT,
     );
@@ -301,7 +176,7 @@ fn a_panic_is_reported_with_its_message() {
 #[test]
 fn json_output_names_the_task_and_spells_out_nan() {
     let outcomes = run_all(
-        flawed(Flaw::PhongUnclamped),
+        variants::naive_named("`phong` raises an unclamped lobe cosine to the exponent"),
         &cases_for(TaskId::Phong),
         TIMEOUT,
     );

@@ -1,14 +1,15 @@
 //! The graded inputs of every task: fixed cases (the worksheet's examples, the errata's
 //! traps) and random cases, the sampler setups of the sampling checks, and the estimators
-//! of the estimator checks. One file per task.
+//! of the estimator checks. Each task's own are in its folder, `src/tasks/<task>/cases.rs`;
+//! this module holds what they share and dispatches to them by [`TaskId`].
 //!
 //! Inputs only: outputs come from the reference, either stored ([`super::expected`]) or,
 //! for hidden cases, computed live.
 
-mod indices;
-mod phong_floor;
-mod polygon;
-mod rough_conductor;
+pub(crate) mod indices;
+pub(crate) mod phong_floor;
+pub(crate) mod polygon;
+pub(crate) mod rough_conductor;
 
 pub use rough_conductor::StoredQuadrature;
 
@@ -25,8 +26,8 @@ use anyhow::bail;
 
 pub use polygon::projected_solid_angle;
 
-/// What a task's catalogue file declares. Every item defaults to "none", so a task has
-/// only what its line in [`registry!`] lists.
+/// What a task's `cases.rs` declares. Every item defaults to "none", so a task has
+/// only what its line in [`crate::for_each_task!`] lists.
 trait TaskCatalogue {
     /// The declared domain (see [`domain`]).
     const DOMAIN: &'static [Param] = &[];
@@ -89,17 +90,16 @@ macro_rules! catalogue_item {
     };
 }
 
-/// The registry: one line per task, `Variant => file { what the file declares }`. It
-/// declares the file's module and dispatches every per-task item by [`TaskId`]; the
-/// matches are exhaustive, so a task left out does not compile.
+/// The registry, generated from the list of tasks ([`crate::for_each_task!`]), one line per
+/// task: `Variant => folder { what its cases.rs declares }`. It dispatches every per-task
+/// item by [`TaskId`]; the matches are exhaustive, so a task left out does not compile.
 macro_rules! registry {
     ($($variant:ident => $module:ident { $($item:ident),* }),* $(,)?) => {
-        $(mod $module;)*
-
         /// One unit type per task, carrying its [`TaskCatalogue`].
         mod entries {
             use super::*;
             $(
+                use crate::tasks::$module::cases as $module;
                 pub(super) struct $variant;
                 impl TaskCatalogue for $variant {
                     $(catalogue_item!($module, $item);)*
@@ -137,23 +137,7 @@ macro_rules! registry {
     };
 }
 
-registry! {
-    Reflect => reflect { DOMAIN, fixed, random },
-    RefractStack => refract_stack { DOMAIN, fixed, random },
-    FresnelSchlick => fresnel_schlick { DOMAIN, fixed, random },
-    CosineSample => cosine_sample { DOMAIN, POWER, fixed, random, setups, estimators },
-    SmithG1 => smith_g1 { DOMAIN, fixed, random },
-    BeckmannNdf => beckmann_ndf { DOMAIN, POWER, fixed, random, estimators },
-    CookTorrance => cook_torrance { DOMAIN, fixed, random },
-    NdfSample => ndf_sample { DOMAIN, POWER, fixed, random, setups, estimators },
-    AnisoNdf => aniso_ndf { DOMAIN, POWER, fixed, random, estimators },
-    Phong => phong { DOMAIN, fixed, random },
-    BrdfCheck => brdf_check { DOMAIN, fixed, random },
-    KajiyaKay => kajiya_kay { DOMAIN, fixed, random },
-    PathTrace => path_trace { POWER, estimators },
-    Mis => mis { POWER, estimators, variance_pairs },
-    DeltaTracking => delta_tracking { POWER, estimators },
-}
+crate::for_each_task!(registry);
 
 /// A value case before its expected output is known.
 #[derive(Clone, Debug, PartialEq)]
@@ -249,7 +233,7 @@ pub const HIDDEN_RANDOM: usize = 2048;
 pub const PUBLIC_SEED: u64 = 0x5eed_2024;
 
 /// The declared domain of `task`'s functions: every parameter's range, special values and
-/// boundaries (see [`super::domain`]), stated in the task's catalogue file. Empty for the
+/// boundaries (see [`super::domain`]), stated in the task's `cases.rs`. Empty for the
 /// integrator tasks, which are graded by estimators and renders, not value cases.
 pub fn domain(task: TaskId) -> &'static [Param] {
     domain_of(task)
@@ -380,7 +364,7 @@ fn conditioning(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
 }
 
 /// A colour in the scene format, for the grader's own scenes.
-fn yaml_rgb(c: glam::DVec3) -> String {
+pub(crate) fn yaml_rgb(c: glam::DVec3) -> String {
     format!("[{}, {}, {}]", c.x, c.y, c.z)
 }
 
@@ -471,12 +455,12 @@ pub fn estimators<T: Tasks>(task: TaskId, t: &T) -> Vec<EstimatorSpec<'_>> {
 /// conductors reflect), beside the same quadrature of `t`'s BSDF: with the reference's
 /// table the two agree (`tests/instructor/reference_values.rs`).
 pub fn stored_quadratures<T: Tasks>(t: &T) -> Vec<StoredQuadrature> {
-    let mut all = path_trace::stored_quadratures(t);
-    all.extend(mis::stored_quadratures(t));
+    let mut all = crate::tasks::path_trace::cases::stored_quadratures(t);
+    all.extend(crate::tasks::mis::cases::stored_quadratures(t));
     all
 }
 
-/// What `task`'s estimator and sampling checks are declared to catch (its catalogue file's
+/// What `task`'s estimator and sampling checks are declared to catch (its `cases.rs`'s
 /// `POWER`); `None` for a task without either.
 pub fn declared_power(task: TaskId) -> Option<crate::grade::power::Declared> {
     power_of(task)

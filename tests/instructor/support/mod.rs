@@ -1,10 +1,9 @@
 //! Implementations for grading the grader: the reference with functions replaced.
 #![allow(dead_code)]
 
-pub mod different;
 pub mod patch;
-pub mod wrong;
-pub mod wrong_integrators;
+pub mod variants;
+pub mod warps;
 
 use pbrlab::grade::checks::{TaskInput, grade_task, score};
 use pbrlab::grade::runner::{GradeOptions, prepare};
