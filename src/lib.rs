@@ -11,6 +11,8 @@
 //! Its own modules:
 //! - [`implementation`]: the task tables a binary links: the student's (the crate in
 //!   `exercises/`) and the reference's (the crate in `solutions/`), and mixes of the two.
+//! - [`tasks`]: one folder per task, with everything the framework knows about it: its
+//!   graded cases, stability cases and the tests' variants.
 //! - [`grade`]: the grader; [`stability`]: stiff and extreme inputs; [`converge`]: error
 //!   against run time.
 //! - [`autograder`]: packages for Gradescope and PrairieLearn, and a whole class at once.
@@ -73,10 +75,12 @@ pub mod implementation;
 pub mod panics;
 pub mod similarity;
 pub mod stability;
+pub mod tasks;
 
 pub use pbrlab_renderer::{
-    atomic_file, bsdf, compiled_reference, geometry, integrator, light, math, medium, optics,
-    prelude, reference_library, render, sampling, scene, task_set, task_table, worksheet,
+    atomic_file, bsdf, compiled_reference, for_each_task_function, geometry, integrator, light,
+    math, medium, optics, prelude, reference_library, render, sampling, scene, task_set,
+    task_table, worksheet,
 };
 
 /// The repository this framework was built from (the workspace root, one folder above the

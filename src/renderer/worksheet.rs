@@ -556,6 +556,21 @@ macro_rules! tasks {
             };
         }
 
+        /// Calls the macro `$callback` with the list of every task function, task by task, as
+        /// `tasks!` takes it (without the docs): `module: Variant { fn name(@t, args) -> Ret;
+        /// … }`, for code generated over every function, such as the tests' patched
+        /// reference (`tests/instructor/support/patch.rs`).
+        #[macro_export]
+        macro_rules! for_each_task_function {
+            ($callback:ident) => {
+                $callback! {
+                    $($module: $variant {
+                        $(fn $name($(@ $ctx,)? $($arg: $ty),*) -> $ret;)+
+                    })+
+                }
+            };
+        }
+
         /// The trait functions that belong to each task, for messages and coverage checks.
         pub fn task_functions(task: TaskId) -> &'static [&'static str] {
             match task {
