@@ -181,26 +181,41 @@ impl IntoOutput for PlausibilityReport {
     }
 }
 
-/// Formats a number for messages: 4 significant digits, scientific when tiny or huge,
-/// and NaN / inf spelled out.
+/// Formats a number for messages: 4 significant digits (see [`format_significant`]).
 pub fn fmt_num(x: f64) -> String {
+    format_significant(x, 4)
+}
+
+/// Formats a number for people with `digits` significant digits (at least 1): plain
+/// decimals from 1e-3 up to below 10^(digits + 1), scientific notation beyond, trailing
+/// zeros dropped (`0.5`, `4e-8`, `3.183e5`), and `NaN`, `inf`, `-inf` spelled out. The one
+/// number format of the grader's messages, the stability tables and the convergence study.
+pub fn format_significant(x: f64, digits: usize) -> String {
+    let digits = digits.max(1);
     if x.is_nan() {
-        "NaN".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 {
-        "0".into()
-    } else if (1e-3..1e5).contains(&x.abs()) {
-        let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
-        let s = format!("{x:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        format!("{x:.3e}")
+        return "NaN".into();
     }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.into();
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').into()
+        } else {
+            s.into()
+        }
+    };
+    let magnitude = x.abs().log10().floor() as i64;
+    if !(-3..=digits as i64).contains(&magnitude) {
+        let s = format!("{x:.*e}", digits - 1);
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        return format!("{}e{exponent}", trim(mantissa));
+    }
+    let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
+    trim(&format!("{x:.decimals$}"))
 }
 
 impl fmt::Display for Output {
@@ -237,7 +252,12 @@ mod tests {
         assert_eq!(fmt_num(0.245_583), "0.2456");
         assert_eq!(fmt_num(1.0), "1");
         assert_eq!(fmt_num(318_309.886), "3.183e5");
+        assert_eq!(fmt_num(12_345.6), "12346");
+        assert_eq!(fmt_num(1e-5), "1e-5");
+        assert_eq!(fmt_num(-2.5e-9), "-2.5e-9");
         assert_eq!(fmt_num(f64::NAN), "NaN");
+        assert_eq!(format_significant(0.999_96, 4), "1");
+        assert_eq!(format_significant(0.123, 0), "0.1");
     }
 
     #[test]

@@ -68,32 +68,10 @@ impl<T: Into<Value>> From<Option<T>> for Value {
     }
 }
 
-/// Formats a number for a table: about seven significant digits, scientific notation for
-/// very large or small magnitudes, and `NaN` / `inf` / `-inf` spelled out.
+/// Formats a number for a table: 7 significant digits
+/// ([`format_significant`](crate::grade::output::format_significant)).
 pub fn format_number(x: f64) -> String {
-    if x.is_nan() {
-        return "NaN".into();
-    }
-    if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.into();
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let magnitude = x.abs().log10().floor();
-    if !(-3.0..6.0).contains(&magnitude) {
-        let s = format!("{x:.6e}");
-        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        return format!("{mantissa}e{exponent}");
-    }
-    let decimals = (6.0 - magnitude) as usize;
-    let s = format!("{x:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').into()
-    } else {
-        s
-    }
+    crate::grade::output::format_significant(x, 7)
 }
 
 impl std::fmt::Display for Value {
@@ -196,7 +174,8 @@ mod tests {
     fn numbers_are_formatted_to_seven_digits() {
         assert_eq!(format_number(1.0 / std::f64::consts::PI), "0.3183099");
         assert_eq!(format_number(318309.886), "318309.9");
-        assert_eq!(format_number(31830988.6), "3.183099e7");
+        assert_eq!(format_number(31830988.6), "31830989");
+        assert_eq!(format_number(318309886.0), "3.183099e8");
         assert_eq!(format_number(4e-8), "4e-8");
         assert_eq!(format_number(3.999_999_92e-8), "4e-8");
         assert_eq!(format_number(-2.5e-9), "-2.5e-9");
