@@ -9,6 +9,7 @@
 
 use super::checks::Raw;
 use super::verdict::{CheckKind, CheckResult};
+use crate::stability::outcome::judge_output;
 use crate::stability::{Case, Verdict};
 
 /// Judges the worker's stability outputs in `raw` against `cases`, into one check, with
@@ -33,8 +34,10 @@ pub fn judge<T>(cases: &[Case<T>], raw: &[Raw]) -> (CheckResult, bool) {
         };
         result.seconds += output.seconds;
         match &output.outcome {
-            Ok(value) => {
-                let verdict = case.judge(value);
+            Ok(_) => {
+                // Judged as `pbrlab stability` judges it: one verdict for both.
+                let judged = judge_output(case, output);
+                let (value, verdict) = (judged.value_text, judged.verdict);
                 if verdict != Verdict::Pass {
                     result.fail(
                         format!(

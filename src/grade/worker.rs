@@ -171,17 +171,7 @@ pub fn run_job<T: Tasks>(t: &T, kind: &JobKind, progress: &mut ProgressSink<'_>)
         JobKind::Stability { case } => crate::stability::cases::<T>()
             .iter()
             .find(|c| c.name == case)
-            .map(|c| {
-                let start = std::time::Instant::now();
-                let outcome = panics::catch(|| (c.eval)(t));
-                Record::Stability {
-                    output: StabilityOutput {
-                        case: c.name.into(),
-                        outcome,
-                        seconds: start.elapsed().as_secs_f64(),
-                    },
-                }
-            })
+            .map(|c| Record::Stability { output: c.run(t) })
             .ok_or_else(|| anyhow!("the stability catalogue has no case `{case}`")),
         JobKind::Probe { task } => task_of(task).map(|task| Record::Attempted {
             attempt: match panics::catch(|| super::probe::probe_task(t, task)) {

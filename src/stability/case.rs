@@ -3,6 +3,7 @@
 use super::expect::{Bound, Expect};
 use super::value::Value;
 use super::verdict::Verdict;
+use crate::grade::checks::StabilityOutput;
 use crate::worksheet::TaskId;
 
 /// One stiff or extreme input for one task, with what the task must return there.
@@ -40,6 +41,18 @@ pub const UNIT_INTERVAL: Bound = Bound::Within(0.0, 1.0);
 pub const DIRECTION: Bound = Bound::Within(-1.0 - 1e-6, 1.0 + 1e-6);
 
 impl<T> Case<T> {
+    /// Calls the case on `t`, catching a panic, timed: what a worker sends back for it
+    /// (its parent judges it, [`super::outcome::judge_output`]).
+    pub fn run(&self, t: &T) -> StabilityOutput {
+        let start = std::time::Instant::now();
+        let outcome = crate::panics::catch(|| (self.eval)(t));
+        StabilityOutput {
+            case: self.name.into(),
+            outcome,
+            seconds: start.elapsed().as_secs_f64(),
+        }
+    }
+
     /// Judges a value the task returned: NaN and infinities first (anywhere in the
     /// result), then the range, then the expectation.
     pub fn judge(&self, value: &Value) -> Verdict {

@@ -1,9 +1,8 @@
 //! Stability cases in worker processes: each case runs in a `pbrlab-worker` of its own, so a
 //! case that overflows the stack, aborts or never returns is reported as a crash or a hang
-//! and every other case still runs. `pbrlab stability` works this way; [`super::run_cases`]
-//! runs cases on threads of the calling process instead.
+//! and every other case still runs. `pbrlab stability` works this way.
 
-use super::runner::CaseResult;
+use super::outcome::CaseResult;
 use super::{Case, Outcome, cases_for};
 use crate::grade::isolation::{self, Launcher, WorkerFailure};
 use crate::grade::runner::{DEFAULT_MEMORY_LIMIT, run_jobs};
@@ -43,7 +42,7 @@ pub fn run_isolated(
         .map(|(case, run)| {
             let result = match run.outcome {
                 Ok(Record::Stability { output }) if output.case == case.name => {
-                    super::runner::judge_output(case, &output)
+                    super::outcome::judge_output(case, &output)
                 }
                 Ok(Record::Error { message }) | Err(WorkerFailure::Grader(message)) => {
                     bail!("{}: the stability worker failed: {message}", case.name)

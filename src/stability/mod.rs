@@ -3,19 +3,20 @@
 //! A [`Case`] is one input for one task (a grazing direction, α = 0, the critical angle
 //! and 2 ulp past it in f32 and f64, a cosine that rounds above one, …) with the range the
 //! result must lie in and the value or limit it must take. [`cases`] lists them all, one
-//! file per task under `catalogue/`, built from the errata's "Stiff / extreme-case
-//! catalogue". [`run_cases`] runs each case on a worker thread with a time limit and
-//! gives a [`Verdict`]: pass, wrong value, NaN, inf, out of range, panic, not attempted
-//! (`todo!()`) or hang; [`run_isolated`] runs each in a worker process instead, which also
-//! survives a case that crashes its process (a stack overflow, an abort).
+//! file per task (`src/tasks/<task>/stability.rs`), built from the errata's "Stiff / extreme-case
+//! catalogue". Stability is a check kind of the grader: a case runs in a worker process
+//! ([`Case::run`]), which sends back what the task returned, and the parent judges it
+//! ([`outcome::judge_output`]) into a [`Verdict`]: pass, wrong value, NaN, inf, out of
+//! range, panic, not attempted (`todo!()`), hang or crash (a stack overflow, an abort).
+//! The grader's check ([`crate::grade::stability`]) runs a task's cases in its grading
+//! job; `pbrlab stability` ([`run_isolated`]) each in a worker of its own, and prints the
+//! table.
 //!
 //! The catalogue is generic over the implementation (`cases::<Student>()`, `cases::<Mixed>()`),
 //! so a case calls the task functions directly, and it places no requirement on the
-//! [`Tasks`](crate::worksheet::Tasks) trait beyond the functions it calls. `pbrlab
-//! stability` prints the table (cases in worker processes); the grader's stability check
-//! runs the same cases inside each task's worker.
+//! [`Tasks`](crate::worksheet::Tasks) trait beyond the functions it calls.
 //!
-//! Adding a case: append it to the task's file in `catalogue/`, with the input in words,
+//! Adding a case: append it to the task's `src/tasks/<task>/stability.rs`, with the input in words,
 //! an evaluation that returns a [`Value`], a range, an [`Expect`], and the guard a robust
 //! implementation needs (the text a student sees when the case fails).
 
@@ -24,7 +25,7 @@ pub mod catalogue;
 pub mod expect;
 pub mod inputs;
 pub mod isolated;
-pub mod runner;
+pub mod outcome;
 pub mod scenes;
 pub mod summary;
 pub mod value;
@@ -34,6 +35,6 @@ pub use case::Case;
 pub use catalogue::{cases, cases_for};
 pub use expect::{Bound, Expect};
 pub use isolated::run_isolated;
-pub use runner::{DEFAULT_TIMEOUT, Outcome, run_case, run_cases};
+pub use outcome::{DEFAULT_TIMEOUT, Outcome};
 pub use value::Value;
 pub use verdict::Verdict;

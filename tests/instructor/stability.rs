@@ -2,9 +2,11 @@
 //! stubs are "not attempted" everywhere, each deliberately naive function fails exactly
 //! the cases it should with the verdict it should, and hangs and panics are reported.
 
-use pbrlab::stability::{Case, Outcome, Verdict, cases, run_cases};
+use pbrlab::stability::outcome::{CaseResult, judge_output};
+use pbrlab::stability::{Case, Outcome, Verdict, cases};
 use pbrlab::worksheet::Tasks;
 use pbrlab_exercises::TASKS as Student;
+use std::sync::{Arc, mpsc};
 use std::time::Duration;
 #[cfg(feature = "solutions")]
 use {
@@ -15,18 +17,45 @@ use {
 /// Far longer than any case takes; only the hang test uses a short limit.
 const TIMEOUT: Duration = Duration::from_secs(20);
 
+/// Stack of each case's thread: as deep as the renderer's, so that a recursive path tracer
+/// that does terminate is not cut short.
+const CASE_STACK: usize = 64 << 20;
+
+/// Runs every case on `imp` the way a worker does ([`Case::run`]), each on a thread of its
+/// own here (a `Patch` is not a table a worker process could load), and judges what came
+/// back as the grader does ([`judge_output`]); a case that has not returned after
+/// `timeout` is a hang, and its thread is left behind (it sleeps, see the hang test).
 fn run_all<T: Tasks + Clone + Send + 'static>(
     imp: T,
-    cases: &[Case<T>],
+    cases: Vec<Case<T>>,
     timeout: Duration,
 ) -> Vec<Outcome> {
-    run_cases(cases, &imp, timeout, |_| {})
+    let _quiet = pbrlab::panics::QuietPanics::new();
+    let cases = Arc::new(cases);
+    (0..cases.len())
+        .map(|i| {
+            let (tx, rx) = mpsc::channel();
+            let (shared, imp) = (Arc::clone(&cases), imp.clone());
+            std::thread::Builder::new()
+                .stack_size(CASE_STACK)
+                .spawn(move || {
+                    // The receiver is gone only if the case already timed out.
+                    let _ = tx.send(shared[i].run(&imp));
+                })
+                .expect("a thread for the case");
+            let result = match rx.recv_timeout(timeout) {
+                Ok(output) => judge_output(&cases[i], &output),
+                Err(_) => CaseResult::hung(timeout.as_secs_f64()),
+            };
+            result.outcome(&cases[i])
+        })
+        .collect()
 }
 
 /// The cases that did not pass, with their verdicts.
 #[cfg(feature = "solutions")]
 fn failures(imp: Patch) -> BTreeMap<&'static str, Verdict> {
-    run_all(imp, &cases(), TIMEOUT)
+    run_all(imp, cases(), TIMEOUT)
         .into_iter()
         .filter(|o| o.verdict != Verdict::Pass)
         .map(|o| (o.case, o.verdict))
@@ -64,7 +93,7 @@ fn stubs_are_not_attempted_everywhere() {
         .into_iter()
         .filter(|c| untouched.contains(&c.task))
         .collect();
-    let outcomes = run_all(Student, &stub_cases, TIMEOUT);
+    let outcomes = run_all(Student, stub_cases, TIMEOUT);
     let other: Vec<Outcome> = outcomes
         .into_iter()
         .filter(|o| o.verdict != Verdict::NotAttempted)
@@ -80,7 +109,7 @@ fn stubs_are_not_attempted_everywhere() {
 #[test]
 fn the_reference_passes_every_case() {
     use pbrlab_solutions::TASKS as Reference;
-    let outcomes = run_all(Reference, &cases(), TIMEOUT);
+    let outcomes = run_all(Reference, cases(), TIMEOUT);
     assert!(outcomes.len() >= 70, "only {} cases", outcomes.len());
     let failed: Vec<Outcome> = outcomes
         .into_iter()
@@ -135,7 +164,7 @@ fn code_that_never_returns_is_reported_as_a_hang() {
                 }
             })
         }),
-        &cases_for(TaskId::SmithG1),
+        cases_for(TaskId::SmithG1),
         Duration::from_millis(150),
     );
     assert!(!outcomes.is_empty());
@@ -157,7 +186,7 @@ fn a_panic_is_reported_with_its_message() {
         patched(TaskId::Reflect, |p| {
             p.reflect = Some(|_, _| panic!("index out of bounds: the len is 3 but the index is 3"))
         }),
-        &cases_for(TaskId::Reflect),
+        cases_for(TaskId::Reflect),
         TIMEOUT,
     );
     for o in &outcomes {
@@ -177,7 +206,7 @@ fn a_panic_is_reported_with_its_message() {
 fn json_output_names_the_task_and_spells_out_nan() {
     let outcomes = run_all(
         variants::naive_named("`phong` raises an unclamped lobe cosine to the exponent"),
-        &cases_for(TaskId::Phong),
+        cases_for(TaskId::Phong),
         TIMEOUT,
     );
     let json = serde_json::to_value(&outcomes).unwrap();

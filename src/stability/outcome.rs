@@ -1,31 +1,21 @@
-//! Runs stability cases on worker threads with a time limit, so that student code that
-//! panics, stops at `todo!()` or never returns gets a verdict instead of taking the run
-//! down.
+//! What came of a stability case: a worker runs it ([`Case::run`]) and sends back what the
+//! task returned or the panic that stopped it; the parent judges that into a [`CaseResult`]
+//! ([`judge_output`]) and, with the case's description, an [`Outcome`]. The grader's
+//! stability check and `pbrlab stability` judge the same way.
 
 use super::case::Case;
 use super::expect::Expect;
 use super::value::Value;
 use super::verdict::Verdict;
 use crate::grade::checks::StabilityOutput;
-use crate::implementation::{is_todo_panic, panic_message};
-use crate::panics::QuietPanics;
-use crate::worksheet::{TaskId, Tasks};
+use crate::worksheet::TaskId;
 use serde::{Deserialize, Serialize};
-use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::mpsc::{self, RecvTimeoutError};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The time limit per case that the command line uses unless told otherwise. Every case
 /// of a sane implementation takes well under a millisecond (the slowest, 10⁵ reflections,
 /// about one).
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(2);
-
-/// Stack of each case's worker thread: as deep as the renderer's, so that a recursive
-/// path tracer that does terminate is not cut short (a thread's stack is reserved, not
-/// committed, so this costs address space only). Recursion without end still overflows
-/// it, which aborts the process: only a child process (the grader's isolation) survives
-/// that.
-const WORKER_STACK: usize = 64 << 20;
 
 /// The result of one case on one implementation.
 #[derive(Clone, Debug, Serialize)]
@@ -65,19 +55,6 @@ enum Ended {
     Panicked(String),
 }
 
-/// Calls a case's evaluation on `imp` in this thread, catching panics.
-fn call<T: Tasks>(eval: fn(&T) -> Value, imp: &T) -> Ended {
-    match catch_unwind(AssertUnwindSafe(|| eval(imp))) {
-        Ok(value) => Ended::Returned(value),
-        Err(payload) if is_todo_panic(payload.as_ref()) => Ended::Todo,
-        Err(payload) => Ended::Panicked(
-            panic_message(payload.as_ref())
-                .unwrap_or("panic with a non-string payload")
-                .to_owned(),
-        ),
-    }
-}
-
 /// What a case gave, without the case's own (static) description: what a worker process
 /// sends back for one case.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -104,15 +81,14 @@ pub struct Returned {
 
 impl CaseResult {
     /// Judges how the call of `case` ended.
-    fn judged<T>(case: &Case<T>, ended: Option<Ended>, elapsed: Duration) -> Self {
+    fn judged<T>(case: &Case<T>, ended: Ended, elapsed: Duration) -> Self {
         let (value, verdict, message) = match ended {
-            Some(Ended::Returned(v)) => {
+            Ended::Returned(v) => {
                 let verdict = case.judge(&v);
                 (Some(v), verdict, None)
             }
-            Some(Ended::Todo) => (None, Verdict::NotAttempted, None),
-            Some(Ended::Panicked(m)) => (None, Verdict::Panic, Some(m)),
-            None => (None, Verdict::Hang, None),
+            Ended::Todo => (None, Verdict::NotAttempted, None),
+            Ended::Panicked(m) => (None, Verdict::Panic, Some(m)),
         };
         Self {
             value_text: value
@@ -173,77 +149,7 @@ pub fn judge_output(case: &Case<impl Sized>, output: &StabilityOutput) -> CaseRe
         Err(p) => Ended::Panicked(p.message.clone()),
     };
     let seconds = Duration::try_from_secs_f64(output.seconds).unwrap_or_default();
-    CaseResult::judged(case, Some(ended), seconds)
-}
-
-/// Runs one case on `imp` on its own thread and judges the result. A call that has not
-/// returned after `timeout` is reported as [`Verdict::Hang`]; its thread cannot be
-/// stopped, so it is left running (a process that ran a hanging case should exit when it
-/// is done, which ends such threads).
-///
-/// Panics are caught on the worker; the panic hook should be silenced around the call
-/// (as [`run_cases`] does) or each student panic prints its message.
-pub fn run_case<T>(case: &Case<T>, imp: &T, timeout: Duration) -> Outcome
-where
-    T: Tasks + Clone + Send + 'static,
-{
-    let (tx, rx) = mpsc::channel();
-    let eval = case.eval;
-    let worker_imp = imp.clone();
-    let spawned = std::thread::Builder::new()
-        .name(format!("stability {}", case.name))
-        .stack_size(WORKER_STACK)
-        .spawn(move || {
-            let start = Instant::now();
-            let ended = call(eval, &worker_imp);
-            // The receiver is gone only if the case already timed out.
-            let _ = tx.send((ended, start.elapsed()));
-        });
-    let result = match spawned {
-        Ok(_) => match rx.recv_timeout(timeout) {
-            Ok((ended, t)) => CaseResult::judged(case, Some(ended), t),
-            Err(RecvTimeoutError::Timeout) => CaseResult::judged(case, None, timeout),
-            Err(RecvTimeoutError::Disconnected) => CaseResult::judged(
-                case,
-                Some(Ended::Panicked(
-                    "the worker thread ended without a result".into(),
-                )),
-                Duration::ZERO,
-            ),
-        },
-        Err(e) => CaseResult::judged(
-            case,
-            Some(Ended::Panicked(format!(
-                "could not start a worker thread: {e}"
-            ))),
-            Duration::ZERO,
-        ),
-    };
-    result.outcome(case)
-}
-
-/// Runs every case in order, calling `on_outcome` as each one finishes (so a caller can
-/// print results as they come and lose nothing if a later case brings the process down),
-/// and returns all outcomes. The panic hook is silenced for the duration; concurrent
-/// calls run one after the other because the hook is global to the process.
-pub fn run_cases<T>(
-    cases: &[Case<T>],
-    imp: &T,
-    timeout: Duration,
-    mut on_outcome: impl FnMut(&Outcome),
-) -> Vec<Outcome>
-where
-    T: Tasks + Clone + Send + 'static,
-{
-    let _quiet = QuietPanics::new();
-    cases
-        .iter()
-        .map(|case| {
-            let outcome = run_case(case, imp, timeout);
-            on_outcome(&outcome);
-            outcome
-        })
-        .collect()
+    CaseResult::judged(case, ended, seconds)
 }
 
 /// The value as a table shows it: records are cut down to the fields the expectation
