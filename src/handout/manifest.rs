@@ -5,7 +5,8 @@
 //! `instructor_*`, and any test or bench that uses the reference: it would not build
 //! without it, and may contain correct code), support folders only those tests use, the
 //! tests' variants of each task (`src/tasks/<task>/variants.rs`: they hold correct
-//! implementations), and insta snapshots of tests that are left out. The grader's data
+//! implementations) and its reference library (`library.rs`, built from `solutions/`), and
+//! insta snapshots of tests that are left out. The grader's data
 //! stays (each task's `src/tasks/<task>/expected.snap` and `tests/snapshots/renders/`): it
 //! holds the public cases and the reference renders only, which is what lets the handout
 //! grade without solutions.
@@ -33,13 +34,14 @@ const TOP_LEVEL: &[&str] = &[
     "LICENSE-APACHE",
 ];
 
-/// True for a task's `variants.rs` (`src/tasks/<task>/variants.rs`): the implementations the
-/// instructor tests grade the grader with, correct ones among them. Only those tests
-/// include it.
-fn is_test_variants(file: &Path) -> bool {
+/// True for the files of a task's folder that only the instructor's side compiles:
+/// `src/tasks/<task>/variants.rs`, the implementations the instructor tests grade the
+/// grader with (correct ones among them), and `library.rs`, the task's reference library
+/// (`tools/reference-library/`, built from `solutions/`).
+fn is_instructor_only(file: &Path) -> bool {
     let parts: Vec<_> = file.components().map(|c| c.as_os_str()).collect();
     matches!(parts.as_slice(), [src, tasks, _, name]
-        if *src == "src" && *tasks == "tasks" && *name == "variants.rs")
+        if *src == "src" && *tasks == "tasks" && (*name == "variants.rs" || *name == "library.rs"))
 }
 
 /// The files of the handout, relative to the repository root, and its Cargo.toml.
@@ -241,7 +243,7 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
             files.push(PathBuf::from(entry));
         }
     }
-    files.retain(|f| !is_test_variants(f));
+    files.retain(|f| !is_instructor_only(f));
     let (tests, mut rest): (Vec<_>, Vec<_>) =
         files.into_iter().partition(|f| f.starts_with("tests"));
     // benches/ is one package: kept whole when none of its sources needs the reference.
@@ -288,15 +290,14 @@ mod tests {
     }
 
     #[test]
-    fn the_tests_variants_of_a_task_are_recognised() {
-        assert!(is_test_variants(Path::new(
-            "src/tasks/smith_g1/variants.rs"
-        )));
-        assert!(!is_test_variants(Path::new("src/tasks/smith_g1/cases.rs")));
-        assert!(!is_test_variants(Path::new("src/tasks/variants.rs")));
-        assert!(!is_test_variants(Path::new(
-            "tests/tasks/smith_g1/variants.rs"
-        )));
+    fn the_instructor_only_files_of_a_task_are_recognised() {
+        let only = |f: &str| is_instructor_only(Path::new(f));
+        assert!(only("src/tasks/smith_g1/variants.rs"));
+        assert!(only("src/tasks/smith_g1/library.rs"));
+        assert!(!only("src/tasks/smith_g1/cases.rs"));
+        assert!(!only("src/tasks/smith_g1/expected.snap"));
+        assert!(!only("src/tasks/variants.rs"));
+        assert!(!only("tests/tasks/smith_g1/variants.rs"));
     }
 
     #[test]

@@ -12,7 +12,9 @@
 //!   the student handout.
 //!
 //! - `expected.snap`: the public cases' expected outputs, generated from the reference
-//!   (`tests/instructor/expected.rs`) and embedded in the grader (`src/build.rs`).
+//!   (`tests/instructor/expected.rs`) and embedded in the grader (`src/build.rs`);
+//! - `library.rs`: the task's reference as a shared library, for the grader's workers (an
+//!   example of `tools/reference-library/`; left out of the handout too).
 //!
 //! Beside the folder, a task has its API (its `TaskId` and signatures, with metadata and
 //! hints, in `src/renderer/worksheet.rs`), the student's file `exercises/<task>.rs` and the
