@@ -10,78 +10,40 @@ use pbrlab::sampling::Sampler;
 use pbrlab::stability::Verdict;
 use pbrlab::worksheet::TaskId;
 
+/// A wrong `delta_tracking`: the reference's algorithm with one flaw (a task function is a plain
+/// `fn`, which cannot capture the flaw, hence a macro).
+macro_rules! flawed {
+    ($name:expr, $flaw:ident) => {
+        variant($name, TaskId::DeltaTracking, |p| {
+            p.delta_tracking =
+                Some(|m, r, tm, n, s| tracking_variant(m, r, tm, n, s, TrackingFlaw::$flaw))
+        })
+    };
+}
+
 /// Known-wrong implementations of `delta_tracking`: each must fail this task and no other.
 pub fn wrong() -> Vec<Variant> {
-    use TaskId::*;
     vec![
-        variant(
+        flawed!(
             "the medium looked up as if the ray started at the origin",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::RayFromOrigin)
-                })
-            },
+            RayFromOrigin
         ),
-        variant(
-            "one tentative collision fewer than allowed",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::OneStepShort)
-                })
-            },
-        ),
-        variant(
-            "one tentative collision more than allowed",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::OneStepTooMany)
-                })
-            },
-        ),
-        variant(
+        flawed!("one tentative collision fewer than allowed", OneStepShort),
+        flawed!("one tentative collision more than allowed", OneStepTooMany),
+        flawed!(
             "a walk out of steps reported as an absorption",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::ExhaustedAsAbsorption)
-                })
-            },
+            ExhaustedAsAbsorption
         ),
-        variant("the sheet's reused random numbers", DeltaTracking, |p| {
-            p.delta_tracking = Some(|m, r, tm, n, s| {
-                tracking_variant(m, r, tm, n, s, TrackingFlaw::ReusedRandomNumbers)
-            })
-        }),
-        variant(
+        flawed!("the sheet's reused random numbers", ReusedRandomNumbers),
+        flawed!(
             "the sheet's escape reported as absorption",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::EscapeAsAbsorption)
-                })
-            },
+            EscapeAsAbsorption
         ),
-        variant("every tentative collision is real", DeltaTracking, |p| {
-            p.delta_tracking = Some(|m, r, tm, n, s| {
-                tracking_variant(m, r, tm, n, s, TrackingFlaw::NoNullCollisions)
-            })
-        }),
-        variant("a NaN majorant is not guarded", DeltaTracking, |p| {
-            p.delta_tracking = Some(|m, r, tm, n, s| {
-                tracking_variant(m, r, tm, n, s, TrackingFlaw::UnguardedNanMajorant)
-            })
-        }),
-        variant(
+        flawed!("every tentative collision is real", NoNullCollisions),
+        flawed!("a NaN majorant is not guarded", UnguardedNanMajorant),
+        flawed!(
             "a walk out of steps reported as an escape",
-            DeltaTracking,
-            |p| {
-                p.delta_tracking = Some(|m, r, tm, n, s| {
-                    tracking_variant(m, r, tm, n, s, TrackingFlaw::ExhaustedAsEscape)
-                })
-            },
+            ExhaustedAsEscape
         ),
     ]
 }

@@ -14,113 +14,70 @@ use pbrlab::scene::Scene;
 use pbrlab::stability::Verdict;
 use pbrlab::worksheet::{TaskId, Tasks};
 
+/// A wrong `mis`: the reference's algorithm with one flaw (a task function is a plain
+/// `fn`, which cannot capture the flaw, hence a macro).
+macro_rules! flawed {
+    ($name:expr, $flaw:ident) => {
+        variant($name, TaskId::Mis, |p| {
+            p.mis = Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::$flaw))
+        })
+    };
+}
+
 /// Known-wrong implementations of `mis`: each must fail this task and no other.
 pub fn wrong() -> Vec<Variant> {
-    use TaskId::*;
     vec![
-        variant("the sheet's G without the cosine at the light", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::MissingLightCosine)
-            })
-        }),
-        variant("the sheet's inverted visibility test", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::NoShadows))
-        }),
-        variant("the sheet's mixed pdf measures in the weights", Mis, |p| {
-            p.mis =
-                Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::MixedMeasures))
-        }),
-        variant(
+        flawed!(
+            "the sheet's G without the cosine at the light",
+            MissingLightCosine
+        ),
+        flawed!("the sheet's inverted visibility test", NoShadows),
+        flawed!(
+            "the sheet's mixed pdf measures in the weights",
+            MixedMeasures
+        ),
+        flawed!(
             "the light's pdf converted with the cosine at the shading point",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::CosineAtShadingPoint)
-                })
-            },
+            CosineAtShadingPoint
         ),
-        variant("an environment sample without its MIS weight", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::UnweightedSkySample)
-            })
-        }),
-        variant("point-light samples dropped", Mis, |p| {
-            p.mis =
-                Some(|t, s, h, wo, he, sa| mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLights))
-        }),
-        variant(
+        flawed!(
+            "an environment sample without its MIS weight",
+            UnweightedSkySample
+        ),
+        flawed!("point-light samples dropped", NoPointLights),
+        flawed!(
             "weights p_a / (p_a − p_b): they sum to one, but are not the balance heuristic",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::DifferenceWeights)
-                })
-            },
+            DifferenceWeights
         ),
-        variant("the light sample's radiance left out", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::LightRadianceIgnored)
-            })
-        }),
-        variant(
+        flawed!("the light sample's radiance left out", LightRadianceIgnored),
+        flawed!(
             "the point light's direction taken from the origin",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::PointLightFromOrigin)
-                })
-            },
+            PointLightFromOrigin
         ),
-        variant("a point light at distance 0 divides 0 by 0", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::UnguardedPointLight)
-            })
-        }),
-        variant(
+        flawed!(
+            "a point light at distance 0 divides 0 by 0",
+            UnguardedPointLight
+        ),
+        flawed!(
             "an environment sample never tested for occlusion",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::UnoccludedSky)
-                })
-            },
+            UnoccludedSky
         ),
-        variant(
+        flawed!(
             "the Lambertian density in the light sample's weight",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::LambertianPdfInWeight)
-                })
-            },
+            LambertianPdfInWeight
         ),
-        variant(
+        flawed!(
             "the Lambertian density in the BSDF sample's weight",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::LambertianPdfInBsdfWeight)
-                })
-            },
+            LambertianPdfInBsdfWeight
         ),
-        variant("point lights skipped under BSDF weights", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::NoPointLightsUnderBsdfWeights)
-            })
-        }),
-        variant("area lights taken as two-sided", Mis, |p| {
-            p.mis = Some(|t, s, h, wo, he, sa| {
-                mis_variant(t, s, h, wo, he, sa, MisFlaw::TwoSidedLights)
-            })
-        }),
-        variant(
+        flawed!(
+            "point lights skipped under BSDF weights",
+            NoPointLightsUnderBsdfWeights
+        ),
+        flawed!("area lights taken as two-sided", TwoSidedLights),
+        flawed!(
             "the bounce returned with its emission not counted",
-            Mis,
-            |p| {
-                p.mis = Some(|t, s, h, wo, he, sa| {
-                    mis_variant(t, s, h, wo, he, sa, MisFlaw::BounceEmissionNotCounted)
-                })
-            },
+            BounceEmissionNotCounted
         ),
     ]
 }

@@ -11,59 +11,38 @@ use pbrlab::scene::Scene;
 use pbrlab::stability::Verdict;
 use pbrlab::worksheet::{TaskId, Tasks};
 
+/// A wrong `path_trace`: the reference's algorithm with one flaw (a task function is a plain
+/// `fn`, which cannot capture the flaw, hence a macro).
+macro_rules! flawed {
+    ($name:expr, $flaw:ident) => {
+        variant($name, TaskId::PathTrace, |p| {
+            p.path_trace = Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::$flaw))
+        })
+    };
+}
+
 /// Known-wrong implementations of `path_trace`: each must fail this task and no other.
 pub fn wrong() -> Vec<Variant> {
-    use TaskId::*;
     vec![
-        variant(
+        flawed!(
             "the sheet's recursion: no light after the camera hit",
-            PathTrace,
-            |p| {
-                p.path_trace = Some(|t, s, seg, d, sa| {
-                    path_variant(t, s, seg, d, sa, PathFlaw::NoLightAfterCamera)
-                })
-            },
+            NoLightAfterCamera
         ),
-        variant("Russian roulette without dividing by q", PathTrace, |p| {
-            p.path_trace = Some(|t, s, seg, d, sa| {
-                path_variant(t, s, seg, d, sa, PathFlaw::RouletteWithoutDivision)
-            })
-        }),
-        variant("emission counted twice", PathTrace, |p| {
-            p.path_trace =
-                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::EmissionTwice))
-        }),
-        variant("the sky added again after an escape", PathTrace, |p| {
-            p.path_trace =
-                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::SkyTwice))
-        }),
-        variant("a survival probability not capped at 1", PathTrace, |p| {
-            p.path_trace =
-                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::UncappedSurvival))
-        }),
-        variant("the roulette test inverted", PathTrace, |p| {
-            p.path_trace =
-                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::InvertedRoulette))
-        }),
-        variant("`depth == 0` as the only stop", PathTrace, |p| {
-            p.path_trace = Some(|t, s, seg, d, sa| {
-                path_variant(t, s, seg, d, sa, PathFlaw::OnlyDepthZeroStops)
-            })
-        }),
-        variant("survival from the smallest channel", PathTrace, |p| {
-            p.path_trace = Some(|t, s, seg, d, sa| {
-                path_variant(t, s, seg, d, sa, PathFlaw::SurvivalFromSmallestChannel)
-            })
-        }),
-        variant("a scalar throughput", PathTrace, |p| {
-            p.path_trace =
-                Some(|t, s, seg, d, sa| path_variant(t, s, seg, d, sa, PathFlaw::ScalarThroughput))
-        }),
-        variant("black where mis gives no bounce", PathTrace, |p| {
-            p.path_trace = Some(|t, s, seg, d, sa| {
-                path_variant(t, s, seg, d, sa, PathFlaw::BlackWithoutBounce)
-            })
-        }),
+        flawed!(
+            "Russian roulette without dividing by q",
+            RouletteWithoutDivision
+        ),
+        flawed!("emission counted twice", EmissionTwice),
+        flawed!("the sky added again after an escape", SkyTwice),
+        flawed!("a survival probability not capped at 1", UncappedSurvival),
+        flawed!("the roulette test inverted", InvertedRoulette),
+        flawed!("`depth == 0` as the only stop", OnlyDepthZeroStops),
+        flawed!(
+            "survival from the smallest channel",
+            SurvivalFromSmallestChannel
+        ),
+        flawed!("a scalar throughput", ScalarThroughput),
+        flawed!("black where mis gives no bounce", BlackWithoutBounce),
     ]
 }
 
