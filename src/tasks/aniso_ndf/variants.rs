@@ -32,6 +32,7 @@ pub fn wrong() -> Vec<Variant> {
             |p| {
                 p.aniso_ndf = Some(|h, ax, ay| {
                     if h.z == 0.0 {
+                        // The formula itself at hz = 0.
                         let (x, y) = (h.x / ax, h.y / ay);
                         1.0 / (PI * ax * ay * (x * x + y * y).powi(2))
                     } else {
@@ -54,6 +55,7 @@ pub fn different() -> Vec<Variant> {
                 if h.z <= 0.0 {
                     return 0.0;
                 }
+                // α = 0 is a mirror, which no density represents: keep a tall finite peak.
                 let (ax, ay) = (ax.max(1e-4), ay.max(1e-4));
                 let c2 = h.z * h.z;
                 let s2 = (1.0 - c2).max(0.0);

@@ -63,6 +63,7 @@ pub fn different() -> Vec<Variant> {
             |p| {
                 p.cosine_sample = Some(|u| {
                     let d = concentric_disk(u);
+                    // u = 0 maps onto the rim: keep cos θ (and the pdf) above 0 there.
                     Vec3::new(
                         d.x,
                         d.y,

@@ -55,6 +55,7 @@ pub fn different() -> Vec<Variant> {
             NdfSample,
             |p| {
                 p.ndf_sample = Some(|t, wo, ax, ay, u| {
+                    // φ from u.x with the anisotropic stretch, θ from u.y.
                     let phi0 = TAU * u.x;
                     let phi = (ay / ax * phi0.tan()).atan()
                         + if phi0 > PI / 2.0 && phi0 <= 3.0 * PI / 2.0 {
@@ -76,6 +77,9 @@ pub fn different() -> Vec<Variant> {
             NdfSample,
             |p| {
                 p.ndf_sample = Some(|t, wo, ax, ay, u| {
+                    // (x, y, z) cosine-distributed is D·cos of GGX at α = 1; stretching the
+                    // slopes by (αx, αy) gives D·cos at (αx, αy). The corners of the square
+                    // land on the rim of the disk, where h is horizontal and wi is rejected.
                     let c = cosine_direction(u);
                     mirror_above(t, wo, Vec3::new(ax * c.x, ay * c.y, c.z).normalize())
                 })
