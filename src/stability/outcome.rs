@@ -48,13 +48,6 @@ fn serialize_task<S: serde::Serializer>(task: &TaskId, s: S) -> Result<S::Ok, S:
     s.serialize_str(task.name())
 }
 
-/// How a call of a case ended.
-enum Ended {
-    Returned(Value),
-    Todo,
-    Panicked(String),
-}
-
 /// What a case gave, without the case's own (static) description: what a worker process
 /// sends back for one case.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -80,27 +73,6 @@ pub struct Returned {
 }
 
 impl CaseResult {
-    /// Judges how the call of `case` ended.
-    fn judged<T>(case: &Case<T>, ended: Ended, elapsed: Duration) -> Self {
-        let (value, verdict, message) = match ended {
-            Ended::Returned(v) => {
-                let verdict = case.judge(&v);
-                (Some(v), verdict, None)
-            }
-            Ended::Todo => (None, Verdict::NotAttempted, None),
-            Ended::Panicked(m) => (None, Verdict::Panic, Some(m)),
-        };
-        Self {
-            value_text: value
-                .as_ref()
-                .map_or_else(|| "—".to_owned(), |v| shown(case, v)),
-            returned: value.map(|value| Returned { value }),
-            verdict,
-            message,
-            seconds: elapsed.as_secs_f64(),
-        }
-    }
-
     /// The result of a case that did not return within `seconds`.
     pub fn hung(seconds: f64) -> Self {
         Self {
@@ -143,13 +115,22 @@ impl CaseResult {
 /// Judges what a worker process sent back for `case` (the value, or the panic that stopped
 /// the call): the worker only runs the case, its parent judges it.
 pub fn judge_output(case: &Case<impl Sized>, output: &StabilityOutput) -> CaseResult {
-    let ended = match &output.outcome {
-        Ok(value) => Ended::Returned(value.clone()),
-        Err(p) if p.message.starts_with(crate::implementation::TODO_MESSAGE) => Ended::Todo,
-        Err(p) => Ended::Panicked(p.message.clone()),
+    let (returned, verdict, message) = match &output.outcome {
+        Ok(value) => (Some(value), case.judge(value), None),
+        Err(p) if p.message.starts_with(crate::implementation::TODO_MESSAGE) => {
+            (None, Verdict::NotAttempted, None)
+        }
+        Err(p) => (None, Verdict::Panic, Some(p.message.clone())),
     };
-    let seconds = Duration::try_from_secs_f64(output.seconds).unwrap_or_default();
-    CaseResult::judged(case, ended, seconds)
+    CaseResult {
+        value_text: returned.map_or_else(|| "—".to_owned(), |v| shown(case, v)),
+        returned: returned.map(|value| Returned {
+            value: value.clone(),
+        }),
+        verdict,
+        message,
+        seconds: output.seconds,
+    }
 }
 
 /// The value as a table shows it: records are cut down to the fields the expectation
