@@ -31,3 +31,5 @@ pub mod smith_g1;
 
 /// The reference as the framework calls it.
 pub static TASKS: worksheet::TaskFns = pbrlab_renderer::task_table!();
+
+pbrlab_renderer::direct_tasks!();

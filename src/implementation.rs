@@ -11,6 +11,8 @@
 //! (`crate::cli::student_side`, `crate::grade::isolation`).
 
 use crate::grade::isolation::Launcher;
+use crate::render::{RenderOptions, RenderOutput, RenderState};
+use crate::scene::Scene;
 use crate::task_set::TaskSet;
 use crate::worksheet::{TaskFns, TaskId};
 use std::sync::OnceLock;
@@ -23,7 +25,16 @@ pub struct Implementations {
     pub student: Option<TaskFns>,
     /// The reference (`solutions/`), absent in the student handout.
     pub reference: Option<TaskFns>,
+    /// A render with the reference's functions called directly rather than through
+    /// `reference` (so the compiler inlines them), in the binary that links `solutions/`:
+    /// `pbrlab render --impl reference` uses it. Never for student code.
+    pub reference_render: Option<DirectRender>,
 }
+
+/// [`render_from`](crate::render::render_from) compiled for an implementation whose task
+/// functions are called directly (`pbrlab_solutions::Direct`): same arguments, same image
+/// bit for bit as with its table, without an indirect call per task function.
+pub type DirectRender = fn(&Scene, &RenderOptions<'_>, RenderState) -> RenderOutput;
 
 static INSTALLED: OnceLock<Implementations> = OnceLock::new();
 
@@ -66,6 +77,12 @@ pub fn no_reference() -> String {
         Some(why) => format!("this build has no reference solutions ({why})"),
         None => "this build has no reference solutions".to_string(),
     }
+}
+
+/// The direct render of the reference ([`Implementations::reference_render`]), when this
+/// binary links it.
+pub fn reference_render() -> Option<DirectRender> {
+    installed().reference_render
 }
 
 /// The reference solution: every task function from `solutions/`.

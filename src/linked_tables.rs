@@ -15,5 +15,11 @@ pub fn install_linked() {
         reference: pbrlab::compiled_reference::load_in(std::path::Path::new(env!(
             "CARGO_MANIFEST_DIR"
         ))),
+        #[cfg(feature = "solutions")]
+        reference_render: Some(|scene, options, state| {
+            pbrlab::render::render_from(scene, &pbrlab_solutions::Direct, options, state)
+        }),
+        #[cfg(not(feature = "solutions"))]
+        reference_render: None,
     });
 }

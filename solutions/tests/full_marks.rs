@@ -14,6 +14,7 @@ fn the_reference_passes_every_check() {
     install(Implementations {
         student: Some(TASKS),
         reference: Some(TASKS),
+        reference_render: None,
     });
     let mut stored = pbrlab::grade::expected::load_all().expect("the stored expected data");
     let inputs: Vec<(TaskId, TaskInput)> = TaskId::ALL

@@ -6,7 +6,6 @@ use crate::render::checkpoint::{self, Origin};
 use crate::render::{self, RenderOptions, RenderOutput, RenderState, output, raycast};
 use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
-use crate::worksheet::Tasks;
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, PoisonError};
@@ -295,7 +294,19 @@ pub fn run(args: Args) -> Result<()> {
         progress: !args.quiet,
         time_limit: args.time,
     };
-    let out = pool.install(|| job.run(&table, start))?;
+    // The reference alone renders with its functions called directly where this binary
+    // links it; any student code stays behind the table.
+    let direct = match choice {
+        ImplChoice::Reference => crate::implementation::reference_render(),
+        ImplChoice::Student | ImplChoice::Mixed => None,
+    };
+    let out = pool.install(|| match direct {
+        Some(render) => job.run(|options, state| render(&scene, options, state), start),
+        None => job.run(
+            |options, state| render::render_from(&scene, &table, options, state),
+            start,
+        ),
+    })?;
     let s = &out.stats;
     if s.rejected_samples > 0 {
         eprintln!(
@@ -383,7 +394,12 @@ struct Saves {
 }
 
 impl Job<'_> {
-    fn run<T: Tasks>(&self, t: &T, start: RenderState) -> Result<RenderOutput> {
+    /// Renders from `start` with `render` (`render_from` for the chosen implementation).
+    fn run(
+        &self,
+        render: impl FnOnce(&RenderOptions<'_>, RenderState) -> RenderOutput,
+        start: RenderState,
+    ) -> Result<RenderOutput> {
         let (checkpoint_path, origin) = self.checkpoint;
         let write = |state: &RenderState| {
             output::write_both(self.output, &state.film.mean())
@@ -413,7 +429,7 @@ impl Job<'_> {
             time_limit: self.time_limit,
             on_pass: Some(&save),
         };
-        let rendered = catch_task_panic(|| render::render_from(self.scene, t, &options, start));
+        let rendered = catch_task_panic(|| render(&options, start));
         // What the passes since the last save computed is kept, whether or not the render
         // finished.
         let unsaved = saves

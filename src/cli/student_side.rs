@@ -73,6 +73,7 @@ fn run(student: TaskFns, cli: Cli) -> anyhow::Result<()> {
     install(Implementations {
         student: Some(student),
         reference: wants_reference.then(reference_from_libraries).flatten(),
+        reference_render: None,
     });
     match cli.command {
         None => render::run(render::Args::default()),

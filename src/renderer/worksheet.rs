@@ -556,6 +556,35 @@ macro_rules! tasks {
             };
         }
 
+        /// Defines `pub struct Direct`, the [`Tasks`] of a crate laid out like `exercises/`
+        /// and `solutions/` (one module per task) with every call made straight to
+        /// `crate::<module>::<function>`: no table, so the compiler can inline one task into
+        /// another and into the renderer. Only the `pbrlab` binary's reference-only renders
+        /// use it (`solutions/`); a student's code stays behind a [`TaskFns`] table.
+        // `crate` is meant, as in `task_table!`.
+        #[allow(clippy::crate_in_macro_def)]
+        #[macro_export]
+        macro_rules! direct_tasks {
+            () => {
+                /// This crate's task functions as a [`Tasks`](pbrlab_renderer::worksheet::Tasks)
+                /// implementation that calls them directly, for renders that may inline them.
+                #[derive(Clone, Copy, Debug, Default)]
+                pub struct Direct;
+
+                const _: () = {
+                    use $crate::prelude::*;
+                    impl $crate::worksheet::Tasks for Direct {
+                        $($(
+                            #[inline]
+                            fn $name(&self, $($arg: $ty),*) -> $ret {
+                                crate::$module::$name($({ let _ = stringify!($ctx); self },)? $($arg),*)
+                            }
+                        )+)+
+                    }
+                };
+            };
+        }
+
         /// Calls the macro `$callback` with the list of every task function, task by task, as
         /// `tasks!` takes it (without the docs): `module: Variant { fn name(@t, args) -> Ret;
         /// … }`, for code generated over every function, such as the tests' patched

@@ -13,6 +13,7 @@ fn main() {
     install(Implementations {
         student: Some(pbrlab_exercises::TASKS),
         reference: None,
+        reference_render: None,
     });
     pbrlab::grade::worker::serve_production()
 }

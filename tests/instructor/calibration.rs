@@ -20,6 +20,7 @@ fn the_reference_fails_no_more_often_than_declared() {
     pbrlab::implementation::install(pbrlab::implementation::Implementations {
         student: None,
         reference: Some(pbrlab_solutions::TASKS),
+        reference_render: None,
     });
     let launcher = Launcher {
         program: crate::support::worker(),

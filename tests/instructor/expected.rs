@@ -65,5 +65,6 @@ fn install() {
     pbrlab::implementation::install(pbrlab::implementation::Implementations {
         student: Some(pbrlab_exercises::TASKS),
         reference: Some(pbrlab_solutions::TASKS),
+        reference_render: None,
     });
 }

@@ -245,3 +245,38 @@ fn a_render_counts_the_rays_cast_in_a_reference_library() {
     let mixed = Reference.with_task(&library, TaskId::PathTrace);
     assert_eq!(render(&scene, &mixed, &options).stats.rays, linked);
 }
+
+/// The reference called directly (`pbrlab_solutions::Direct`, what `pbrlab render --impl
+/// reference` uses, with every task inlined) renders what its table renders, bit for bit,
+/// on scenes that between them use every material, light and medium kind and both BVHs.
+#[test]
+fn the_direct_reference_renders_what_its_table_renders() {
+    for name in [
+        "cornell",
+        "materials",
+        "glass",
+        "knot",
+        "hair",
+        "smoke",
+        "veach_mis",
+    ] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.yaml"));
+        let options = LoadOptions {
+            width: Some(24),
+            height: Some(18),
+            spp: Some(3),
+            seed: Some(5),
+            ..Default::default()
+        };
+        let scene = Scene::load(&path, &options).expect("a shipped scene loads");
+        let opts = RenderOptions::from_scene(&scene);
+        let table = render(&scene, &Reference, &opts);
+        let direct = render(&scene, &pbrlab_solutions::Direct, &opts);
+        assert_eq!(table.stats.rays, direct.stats.rays, "{name}");
+        assert_eq!(
+            bits(&table.mean.pixels),
+            bits(&direct.mean.pixels),
+            "{name}"
+        );
+    }
+}

@@ -17,6 +17,7 @@ pub fn install() {
     pbrlab::implementation::install(pbrlab::implementation::Implementations {
         student: Some(pbrlab_exercises::TASKS),
         reference: Some(pbrlab_solutions::TASKS),
+        reference_render: None,
     });
 }
 
