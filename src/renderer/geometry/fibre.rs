@@ -68,8 +68,11 @@ impl FibreSegment {
 /// Every hair fibre segment of the scene under one BVH, in traversal order.
 pub struct FibreSet {
     bvh: Bvh,
+    /// By the BVH's slots.
     segments: Vec<FibreSegment>,
+    /// By slot.
     shapes: Vec<ShapeId>,
+    count: usize,
 }
 
 impl FibreSet {
@@ -77,39 +80,56 @@ impl FibreSet {
     pub fn new(segments: Vec<FibreSegment>, shapes: Vec<ShapeId>) -> Self {
         let boxes: Vec<Aabb> = segments.iter().map(FibreSegment::aabb).collect();
         let bvh = Bvh::build(&boxes);
-        let order = bvh.order();
-        let sorted = order.iter().map(|&i| segments[i as usize]).collect();
-        let sorted_shapes = order.iter().map(|&i| shapes[i as usize]).collect();
+        // Padding slots (never tested: a leaf's slot range ends before them) repeat the
+        // first segment.
+        let sorted = bvh
+            .order()
+            .iter()
+            .map(|&i| segments.get(i as usize).copied().unwrap_or(segments[0]))
+            .collect();
+        let sorted_shapes = bvh
+            .order()
+            .iter()
+            .map(|&i| shapes.get(i as usize).copied().unwrap_or(0))
+            .collect();
         Self {
             bvh,
             segments: sorted,
             shapes: sorted_shapes,
+            count: segments.len(),
         }
     }
 
     /// Number of segments.
     pub fn len(&self) -> usize {
-        self.segments.len()
+        self.count
     }
 
     /// True when there are no segments.
     pub fn is_empty(&self) -> bool {
-        self.segments.is_empty()
+        self.count == 0
     }
 
     /// The nearest fibre hit in `(0, t_max)`: its distance and slot.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<(f32, usize)> {
-        self.bvh.closest(ray, t_max, |slot, t_max| {
-            self.segments[slot].intersect(ray, t_max).map(|(t, _)| t)
+        self.bvh.closest(ray, t_max, |slots, mut best| {
+            let mut found = None;
+            for slot in slots {
+                if let Some((t, _)) = self.segments[slot].intersect(ray, best) {
+                    best = t;
+                    found = Some((t, slot));
+                }
+            }
+            found
         })
     }
 
     /// True when some fibre lies in `(0, t_max)` along the ray.
     #[inline]
     pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        self.bvh.any(ray, t_max, |slot, t_max| {
-            self.segments[slot].intersect(ray, t_max).map(|(t, _)| t)
+        self.bvh.any(ray, t_max, |mut slots, t_max| {
+            slots.any(|slot| self.segments[slot].intersect(ray, t_max).is_some())
         })
     }
 
@@ -139,5 +159,43 @@ impl FibreSet {
             epsilon: seg.radius,
             fibre: true,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::{Sampler, uniform_sphere};
+
+    #[test]
+    fn the_bvh_finds_what_testing_every_fibre_finds() {
+        let mut sampler = Sampler::new(5, 6);
+        let mut point = || Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d());
+        let segments: Vec<FibreSegment> = (0..500)
+            .map(|_| {
+                let a = point();
+                FibreSegment {
+                    a,
+                    b: a + 0.1 * (point() - 0.5),
+                    radius: 0.01,
+                }
+            })
+            .collect();
+        let set = FibreSet::new(segments.clone(), vec![0; segments.len()]);
+        let mut sampler = Sampler::new(7, 8);
+        let mut hits = 0;
+        for i in 0..3000 {
+            let o = Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d());
+            let ray = Ray::new(o, uniform_sphere(sampler.next_2d()));
+            let t_max = if i % 2 == 0 { 0.3 } else { f32::INFINITY };
+            let brute = segments
+                .iter()
+                .filter_map(|s| s.intersect(&ray, t_max).map(|(t, _)| t))
+                .min_by(f32::total_cmp);
+            assert_eq!(set.intersect(&ray, t_max).map(|f| f.0), brute, "ray {i}");
+            assert_eq!(set.occluded(&ray, t_max), brute.is_some(), "ray {i}");
+            hits += brute.is_some() as u32;
+        }
+        assert!(hits > 300, "{hits} rays hit");
     }
 }

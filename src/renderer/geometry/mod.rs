@@ -11,7 +11,6 @@ mod ray;
 mod sphere;
 mod triangle;
 
-pub use bvh::{Bvh, to_obvhs};
 pub use fibre::{FibreSegment, FibreSet};
 pub use hit::{Hit, ShapeId};
 pub use mesh::TriangleSet;

@@ -1,5 +1,5 @@
 use super::Ray;
-use glam::{DVec3, Vec3};
+use glam::{DVec3, Vec3, Vec4};
 
 /// A ray prepared for the watertight ray-triangle test of Woop, Benthin and Wald (2013):
 /// the coordinate axes are permuted so the ray runs along +z, and the other two axes are
@@ -11,12 +11,46 @@ use glam::{DVec3, Vec3};
 /// to the origin) maps to `(a·row_x, a·row_y, a·row_z)`: each row has at most two non-zero
 /// entries, so the dot products round exactly as `a[kx] − sx a[kz]` does, without indexing
 /// by a run-time axis in the inner loop.
+///
+/// [`WatertightRay::intersect_pack`] tests four triangles at once with the same operations
+/// in the same order, lane by lane, so it finds the same distances bit for bit.
 #[derive(Clone, Copy, Debug)]
 pub struct WatertightRay {
     origin: Vec3,
     row_x: Vec3,
     row_y: Vec3,
     row_z: Vec3,
+    /// `origin` and the rows, each component in all four lanes (`rows[row][axis]`).
+    origin4: [Vec4; 3],
+    rows4: [[Vec4; 3]; 3],
+}
+
+/// Four triangles as structure-of-arrays lanes (one BVH leaf): `v[k][axis]` holds vertex
+/// `k`'s coordinate on `axis` of every lane. Unused lanes are NaN and never hit.
+#[derive(Clone, Copy, Debug)]
+pub struct TrianglePack {
+    v: [[Vec4; 3]; 3],
+}
+
+impl TrianglePack {
+    /// Packs up to four triangles; the lanes after them are unused.
+    pub fn new(tris: &[[Vec3; 3]]) -> Self {
+        let mut v = [[Vec4::NAN; 3]; 3];
+        for (lane, tri) in tris.iter().take(4).enumerate() {
+            for (k, vertex) in tri.iter().enumerate() {
+                for axis in 0..3 {
+                    v[k][axis][lane] = vertex[axis];
+                }
+            }
+        }
+        Self { v }
+    }
+
+    /// The triangle in `lane`.
+    fn lane(&self, lane: usize) -> [Vec3; 3] {
+        self.v
+            .map(|vertex| Vec3::new(vertex[0][lane], vertex[1][lane], vertex[2][lane]))
+    }
 }
 
 impl WatertightRay {
@@ -46,12 +80,64 @@ impl WatertightRay {
         row_y[ky] = 1.0;
         row_y[kz] = -sy;
         row_z[kz] = sz;
+        let splat = |v: Vec3| [Vec4::splat(v.x), Vec4::splat(v.y), Vec4::splat(v.z)];
         Self {
             origin: ray.origin,
             row_x,
             row_y,
             row_z,
+            origin4: splat(ray.origin),
+            rows4: [splat(row_x), splat(row_y), splat(row_z)],
         }
+    }
+
+    /// Per lane of `pack`, the distance to its triangle when it lies in `(0, t_max)`, or
+    /// +∞: what [`WatertightRay::intersect`] gives for each lane. A lane with an edge
+    /// function of exactly zero is decided by that scalar test (in double precision).
+    #[inline]
+    pub fn intersect_pack(&self, pack: &TrianglePack, t_max: f32) -> Vec4 {
+        let o = &self.origin4;
+        let relative = |k: usize| {
+            let v = &pack.v[k];
+            [v[0] - o[0], v[1] - o[1], v[2] - o[2]]
+        };
+        // The same sums in the same order as `Vec3::dot` in the scalar test.
+        let dot = |p: &[Vec4; 3], row: &[Vec4; 3]| p[0] * row[0] + p[1] * row[1] + p[2] * row[2];
+        let (a, b, c) = (relative(0), relative(1), relative(2));
+        let [rx, ry, rz] = &self.rows4;
+        let (ax, ay, bx, by, cx, cy) = (
+            dot(&a, rx),
+            dot(&a, ry),
+            dot(&b, rx),
+            dot(&b, ry),
+            dot(&c, rx),
+            dot(&c, ry),
+        );
+        let u = cx * by - cy * bx;
+        let v = ax * cy - ay * cx;
+        let w = bx * ay - by * ax;
+        let zero = Vec4::ZERO;
+        let exact_zero = u.cmpeq(zero) | v.cmpeq(zero) | w.cmpeq(zero);
+        let mixed = (u.cmplt(zero) | v.cmplt(zero) | w.cmplt(zero))
+            & (u.cmpgt(zero) | v.cmpgt(zero) | w.cmpgt(zero));
+        let det = u + v + w;
+        let t_scaled = u * dot(&a, rz) + v * dot(&b, rz) + w * dot(&c, rz);
+        let limit = Vec4::splat(t_max) * det;
+        let outside = (det.cmplt(zero) & (t_scaled.cmpge(zero) | t_scaled.cmple(limit)))
+            | (det.cmpgt(zero) & (t_scaled.cmple(zero) | t_scaled.cmpge(limit)));
+        let t = t_scaled / det;
+        let inside = t.cmpgt(zero) & t.cmplt(Vec4::splat(t_max));
+        let hit = inside & !(mixed | outside | det.cmpeq(zero));
+        let mut result = Vec4::select(hit, t, Vec4::INFINITY);
+        let mut fallback = exact_zero.bitmask();
+        while fallback != 0 {
+            let lane = fallback.trailing_zeros() as usize;
+            fallback &= fallback - 1;
+            result[lane] = self
+                .intersect(&pack.lane(lane), t_max)
+                .unwrap_or(f32::INFINITY);
+        }
+        result
     }
 
     /// The distance to the triangle `v` along the ray when it lies in `(0, t_max)`.

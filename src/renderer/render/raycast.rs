@@ -1,9 +1,10 @@
-//! Ray-casting throughput of the scene layer against obvhs traversing the same BVH with the
-//! same rays directly (its own ray-triangle test, no hit record): how much the scene's
-//! wrapper costs. Measured in one run, interleaved, best of several rounds each, so that
-//! the ratio does not depend on the machine's load.
+//! Ray-casting throughput of the scene layer (its four-wide BVH, the watertight triangle
+//! test, hit records) against obvhs' CWBVH over the same triangles, traversed with the same
+//! rays directly (its own ray-triangle test, no hit record). Measured in one run,
+//! interleaved, best of several rounds each, so that the ratio does not depend on the
+//! machine's load.
 
-use crate::geometry::{Ray, to_obvhs};
+use crate::geometry::Ray;
 use crate::sampling::{Sampler, uniform_sphere};
 use crate::scene::Scene;
 use serde::Serialize;
@@ -18,7 +19,7 @@ pub struct RaycastComparison {
     pub triangles: usize,
     /// Closest-hit rays per second through [`Scene::intersect`] (full hit records).
     pub scene_rays_per_second: f64,
-    /// Closest-hit rays per second through obvhs directly.
+    /// Closest-hit rays per second through obvhs' CWBVH directly.
     pub obvhs_rays_per_second: f64,
     /// `scene_rays_per_second / obvhs_rays_per_second`.
     pub ratio: f64,
@@ -37,7 +38,7 @@ pub fn test_rays(scene: &Scene, count: usize, seed: u64) -> Vec<Ray> {
         .surfaces()
         .triangles()
         .map(|t| {
-            t.triangles().iter().flatten().fold(
+            t.triangles().flatten().fold(
                 (
                     glam::Vec3::splat(f32::INFINITY),
                     glam::Vec3::splat(f32::NEG_INFINITY),
@@ -59,22 +60,28 @@ pub fn test_rays(scene: &Scene, count: usize, seed: u64) -> Vec<Ray> {
         .collect()
 }
 
-/// Casts `rays` through the scene and through obvhs directly, `rounds` times each
-/// (interleaved), and compares the best times. `None` when the scene has no triangles.
+/// Casts `rays` through the scene and through an obvhs CWBVH (built here, with its medium
+/// settings) directly, `rounds` times each (interleaved), and compares the best times.
+/// `None` when the scene has no triangles.
 pub fn compare_with_obvhs(scene: &Scene, rays: &[Ray], rounds: usize) -> Option<RaycastComparison> {
     let set = scene.surfaces().triangles()?;
-    let bvh = &set.bvh().cwbvh;
     let tris: Vec<obvhs::triangle::Triangle> = set
         .triangles()
-        .iter()
         .map(|v| obvhs::triangle::Triangle {
             v0: v[0].into(),
             v1: v[1].into(),
             v2: v[2].into(),
         })
         .collect();
-    let obvhs_rays: Vec<obvhs::ray::Ray> =
-        rays.iter().map(|r| to_obvhs(r, f32::INFINITY)).collect();
+    let bvh = obvhs::cwbvh::builder::build_cwbvh_from_tris(
+        &tris,
+        obvhs::BvhBuildParams::medium_build(),
+        &mut std::time::Duration::default(),
+    );
+    let obvhs_rays: Vec<obvhs::ray::Ray> = rays
+        .iter()
+        .map(|r| obvhs::ray::Ray::new_inf(r.origin.into(), r.dir.into()))
+        .collect();
     let (mut best_scene, mut best_obvhs) = (f64::INFINITY, f64::INFINITY);
     let (mut scene_hits, mut obvhs_hits) = (0, 0);
     for _ in 0..rounds.max(1) {
@@ -87,7 +94,9 @@ pub fn compare_with_obvhs(scene: &Scene, rays: &[Ray], rounds: usize) -> Option<
             .iter()
             .filter(|r| {
                 let mut hit = obvhs::ray::RayHit::none();
-                bvh.ray_traverse(**r, &mut hit, |ray, id| tris[id].intersect(ray))
+                bvh.ray_traverse(**r, &mut hit, |ray, id| {
+                    tris[bvh.primitive_indices[id] as usize].intersect(ray)
+                })
             })
             .count();
         best_obvhs = best_obvhs.min(start.elapsed().as_secs_f64());
