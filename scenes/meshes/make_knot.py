@@ -3,8 +3,12 @@
 centred at the origin and about 2 units across. Made for pbrlab; rerun to regenerate:
 
     python3 scenes/meshes/make_knot.py > scenes/meshes/knot.obj
+
+A finer tube for benchmarks: `make_knot.py ALONG AROUND` (2400 24 gives 115,200 triangles;
+tools/bench_render.sh writes that one to a temporary folder).
 """
 import math
+import sys
 
 ALONG, AROUND, TUBE = 96, 12, 0.18
 
@@ -31,6 +35,9 @@ def normalize(a):
 
 
 def main():
+    global ALONG, AROUND
+    if len(sys.argv) == 3:
+        ALONG, AROUND = int(sys.argv[1]), int(sys.argv[2])
     print("# A trefoil knot tube for pbrlab: %d x %d quads as triangles, closed." % (ALONG, AROUND))
     print("o knot")
     for i in range(ALONG):
