@@ -16,6 +16,7 @@ use glam::{BVec4A, Vec4};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::bvh2::Bvh2;
+use smallvec::SmallVec;
 use std::ops::Range;
 use std::time::Duration;
 
@@ -26,47 +27,10 @@ pub const LEAF_SLOTS: usize = 4;
 /// A child reference with this bit set is a leaf: `LEAF | pack << 2 | (count − 1)`.
 const LEAF: u32 = 1 << 31;
 
-/// Entries of a traversal stack kept in place: a four-wide tree pushes at most three per
-/// level, and PLOC's trees of a million primitives stay within 21 four-wide levels. A
-/// deeper one spills onto the heap. (Every ray clears this many entries: keep it small.)
-const STACK: usize = 64;
-
-/// A traversal stack: [`STACK`] entries in place, more on the heap (never, in practice).
-struct Stack<T> {
-    inline: [T; STACK],
-    len: usize,
-    spill: Vec<T>,
-}
-
-impl<T: Copy> Stack<T> {
-    #[inline(always)]
-    fn new(fill: T) -> Self {
-        Self {
-            inline: [fill; STACK],
-            len: 0,
-            spill: Vec::new(),
-        }
-    }
-
-    #[inline(always)]
-    fn push(&mut self, value: T) {
-        if self.len < STACK {
-            self.inline[self.len] = value;
-            self.len += 1;
-        } else {
-            self.spill.push(value);
-        }
-    }
-
-    #[inline(always)]
-    fn pop(&mut self) -> Option<T> {
-        if let Some(value) = self.spill.pop() {
-            return Some(value);
-        }
-        self.len = self.len.checked_sub(1)?;
-        Some(self.inline[self.len])
-    }
-}
+/// A traversal stack: this many entries in place (not cleared for each ray), more on the
+/// heap. A four-wide tree pushes at most three per level, and PLOC's trees of a million
+/// primitives stay within 21 four-wide levels.
+type Stack<T> = SmallVec<[T; 64]>;
 
 /// One node: the boxes of up to four children as structure-of-arrays lanes. An unused lane
 /// has an empty box at +∞ that no ray enters.
@@ -254,7 +218,7 @@ impl Bvh {
         let r = BoxRay::new(ray);
         let mut best = t_max;
         let mut found = None;
-        let mut stack = Stack::new((0u32, 0f32));
+        let mut stack = Stack::<(u32, f32)>::new();
         let mut node = 0u32;
         'traversal: loop {
             if node & LEAF != 0 {
@@ -312,7 +276,7 @@ impl Bvh {
         mut leaf: impl FnMut(Range<usize>, f32) -> bool,
     ) -> bool {
         let r = BoxRay::new(ray);
-        let mut stack = Stack::new(0u32);
+        let mut stack = Stack::<u32>::new();
         let mut node = 0u32;
         loop {
             if node & LEAF != 0 {
