@@ -42,10 +42,11 @@ struct Node {
 }
 
 /// A four-wide BVH over primitives given by their bounding boxes. Its leaves refer to
-/// primitives by slot: slot `i` holds input primitive [`Bvh::order`]`()[i]`, or nothing
-/// (`u32::MAX`, padding), so callers store their primitives in that order.
+/// primitives by slot: callers store their primitives in slot order ([`Bvh::by_slot`]), so
+/// that a leaf's slots index them directly.
 pub struct Bvh {
     nodes: Vec<Node>,
+    /// For each slot, the input primitive stored there (`u32::MAX`: padding).
     order: Vec<u32>,
 }
 
@@ -126,10 +127,13 @@ impl Bvh {
         bvh
     }
 
-    /// For each slot, the index of the input primitive stored there; `u32::MAX` for the
-    /// padding after a leaf of fewer than [`LEAF_SLOTS`] primitives.
-    pub fn order(&self) -> &[u32] {
-        &self.order
+    /// `items` (one per input primitive) in slot order, with `padding` in the slots after a
+    /// leaf of fewer than [`LEAF_SLOTS`] primitives.
+    pub fn by_slot<T: Copy>(&self, items: &[T], padding: T) -> Vec<T> {
+        self.order
+            .iter()
+            .map(|&i| items.get(i as usize).copied().unwrap_or(padding))
+            .collect()
     }
 
     /// Adds the leaf `index` of `bvh2`: its primitives in the next free slots, padded to

@@ -80,23 +80,12 @@ impl FibreSet {
     pub fn new(segments: Vec<FibreSegment>, shapes: Vec<ShapeId>) -> Self {
         let boxes: Vec<Aabb> = segments.iter().map(FibreSegment::aabb).collect();
         let bvh = Bvh::build(&boxes);
-        // Padding slots (never tested: a leaf's slot range ends before them) repeat the
-        // first segment.
-        let sorted = bvh
-            .order()
-            .iter()
-            .map(|&i| segments.get(i as usize).copied().unwrap_or(segments[0]))
-            .collect();
-        let sorted_shapes = bvh
-            .order()
-            .iter()
-            .map(|&i| shapes.get(i as usize).copied().unwrap_or(0))
-            .collect();
+        // Padding slots are never tested (a leaf's slot range ends before them).
         Self {
-            bvh,
-            segments: sorted,
-            shapes: sorted_shapes,
+            segments: bvh.by_slot(&segments, segments[0]),
+            shapes: bvh.by_slot(&shapes, 0),
             count: segments.len(),
+            bvh,
         }
     }
 

@@ -29,23 +29,16 @@ impl TriangleSet {
             .map(|v| Aabb::from_points(&v.map(Vec3A::from)))
             .collect();
         let bvh = Bvh::build(&boxes);
-        let slot = |&i: &u32| tris.get(i as usize).copied().unwrap_or([Vec3::NAN; 3]);
-        let sorted_tris: Vec<[Vec3; 3]> = bvh.order().iter().map(slot).collect();
-        let packs = sorted_tris
-            .chunks(LEAF_SLOTS)
-            .map(TrianglePack::new)
-            .collect();
-        let sorted_shapes = bvh
-            .order()
-            .iter()
-            .map(|&i| shapes.get(i as usize).copied().unwrap_or(0))
-            .collect();
+        let sorted_tris = bvh.by_slot(&tris, [Vec3::NAN; 3]);
         Self {
-            bvh,
+            packs: sorted_tris
+                .chunks(LEAF_SLOTS)
+                .map(TrianglePack::new)
+                .collect(),
             tris: sorted_tris,
-            packs,
-            shapes: sorted_shapes,
+            shapes: bvh.by_slot(&shapes, 0),
             count: tris.len(),
+            bvh,
         }
     }
 
