@@ -1,8 +1,9 @@
 use super::Ray;
-use super::bvh::Bvh;
+use super::bvh::{Bvh, LEAF_SLOTS};
 use super::hit::{Hit, ShapeId};
+use super::packs::{Ray4, nearest_lane};
 use crate::math::Frame;
-use glam::{Vec3, Vec3A};
+use glam::{Vec3, Vec3A, Vec4};
 use obvhs::aabb::Aabb;
 
 /// One straight piece of a hair strand: the axis from `a` to `b`, seen as a ribbon of
@@ -65,11 +66,88 @@ impl FibreSegment {
     }
 }
 
+/// Four fibre segments as structure-of-arrays lanes (one BVH leaf), with what
+/// [`FibreSegment::intersect`] derives from each segment alone computed once. Unused lanes
+/// are NaN and never hit.
+#[derive(Clone, Copy, Debug)]
+struct FibrePack {
+    a: [Vec4; 3],
+    /// `b − a`.
+    w: [Vec4; 3],
+    /// `w · w`.
+    ww: Vec4,
+    radius: Vec4,
+    radius2: Vec4,
+}
+
+impl FibrePack {
+    /// Packs up to four segments; the lanes after them are unused.
+    fn new(segments: &[FibreSegment]) -> Self {
+        let mut pack = Self {
+            a: [Vec4::NAN; 3],
+            w: [Vec4::NAN; 3],
+            ww: Vec4::NAN,
+            radius: Vec4::NAN,
+            radius2: Vec4::NAN,
+        };
+        for (lane, seg) in segments.iter().take(4).enumerate() {
+            let w = seg.b - seg.a;
+            for axis in 0..3 {
+                pack.a[axis][lane] = seg.a[axis];
+                pack.w[axis][lane] = w[axis];
+            }
+            pack.ww[lane] = w.dot(w);
+            pack.radius[lane] = seg.radius;
+            pack.radius2[lane] = seg.radius * seg.radius;
+        }
+        pack
+    }
+
+    /// Per lane, the distance [`FibreSegment::intersect`] finds for its segment, or +∞:
+    /// the same operations in the same order, so the same distance bit for bit.
+    #[inline]
+    fn intersect(&self, ray: &Ray4, t_max: f32) -> Vec4 {
+        let (o, d) = ([ray.ox, ray.oy, ray.oz], [ray.dx, ray.dy, ray.dz]);
+        let dot = |p: &[Vec4; 3], q: &[Vec4; 3]| p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+        // `f32::clamp(x, 0, 1)`, NaN kept.
+        let unit = |x: Vec4| {
+            let low = Vec4::select(x.cmpgt(Vec4::ONE), Vec4::ONE, x);
+            Vec4::select(x.cmplt(Vec4::ZERO), Vec4::ZERO, low)
+        };
+        let (a, w) = (&self.a, &self.w);
+        let r = [o[0] - a[0], o[1] - a[1], o[2] - a[2]];
+        let dw = dot(&d, w);
+        let dr = dot(&d, &r);
+        let wr = dot(w, &r);
+        let denom = self.ww - dw * dw;
+        let crossing = unit((wr - dw * dr) / denom);
+        let parallel = Vec4::select(self.ww.cmpgt(Vec4::ZERO), unit(wr / self.ww), Vec4::ZERO);
+        let s = Vec4::select(
+            denom.cmpgt(Vec4::splat(1e-12) * self.ww),
+            crossing,
+            parallel,
+        );
+        let axis = [a[0] + s * w[0], a[1] + s * w[1], a[2] + s * w[2]];
+        let t = dot(&[axis[0] - o[0], axis[1] - o[1], axis[2] - o[2]], &d);
+        let off = [
+            o[0] + t * d[0] - axis[0],
+            o[1] + t * d[1] - axis[1],
+            o[2] + t * d[2] - axis[2],
+        ];
+        let hit = t.cmpgt(self.radius)
+            & t.cmplt(Vec4::splat(t_max))
+            & dot(&off, &off).cmple(self.radius2);
+        Vec4::select(hit, t, Vec4::INFINITY)
+    }
+}
+
 /// Every hair fibre segment of the scene under one BVH, in traversal order.
 pub struct FibreSet {
     bvh: Bvh,
     /// By the BVH's slots.
     segments: Vec<FibreSegment>,
+    /// By leaf: the segments of slots `4k .. 4k + 4`.
+    packs: Vec<FibrePack>,
     /// By slot.
     shapes: Vec<ShapeId>,
     count: usize,
@@ -80,9 +158,16 @@ impl FibreSet {
     pub fn new(segments: Vec<FibreSegment>, shapes: Vec<ShapeId>) -> Self {
         let boxes: Vec<Aabb> = segments.iter().map(FibreSegment::aabb).collect();
         let bvh = Bvh::build(&boxes);
-        // Padding slots are never tested (a leaf's slot range ends before them).
+        // Padding: a segment that no ray hits (every comparison with NaN fails).
+        let nowhere = FibreSegment {
+            a: Vec3::NAN,
+            b: Vec3::NAN,
+            radius: f32::NAN,
+        };
+        let sorted = bvh.by_slot(&segments, nowhere);
         Self {
-            segments: bvh.by_slot(&segments, segments[0]),
+            packs: sorted.chunks(LEAF_SLOTS).map(FibrePack::new).collect(),
+            segments: sorted,
             shapes: bvh.by_slot(&shapes, 0),
             count: segments.len(),
             bvh,
@@ -102,23 +187,22 @@ impl FibreSet {
     /// The nearest fibre hit in `(0, t_max)`: its distance and slot.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<(f32, usize)> {
-        self.bvh.closest(ray, t_max, |slots, mut best| {
-            let mut found = None;
-            for slot in slots {
-                if let Some((t, _)) = self.segments[slot].intersect(ray, best) {
-                    best = t;
-                    found = Some((t, slot));
-                }
-            }
-            found
+        let ray4 = Ray4::new(ray);
+        self.bvh.closest(ray, t_max, |slots, t_max| {
+            let t = self.packs[slots.start / LEAF_SLOTS].intersect(&ray4, t_max);
+            nearest_lane(t, t_max).map(|(t, lane)| (t, slots.start + lane))
         })
     }
 
     /// True when some fibre lies in `(0, t_max)` along the ray.
     #[inline]
     pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        self.bvh.any(ray, t_max, |mut slots, t_max| {
-            slots.any(|slot| self.segments[slot].intersect(ray, t_max).is_some())
+        let ray4 = Ray4::new(ray);
+        self.bvh.any(ray, t_max, |slots, t_max| {
+            self.packs[slots.start / LEAF_SLOTS]
+                .intersect(&ray4, t_max)
+                .cmplt(Vec4::INFINITY)
+                .any()
         })
     }
 
@@ -186,5 +270,43 @@ mod tests {
             hits += brute.is_some() as u32;
         }
         assert!(hits > 300, "{hits} rays hit");
+    }
+
+    #[test]
+    fn a_pack_of_fibres_gives_the_scalar_tests_distances_bit_for_bit() {
+        let mut sampler = Sampler::new(9, 10);
+        let mut point = || Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d());
+        let mut segments: Vec<FibreSegment> = (0..400)
+            .map(|i| {
+                let a = point();
+                // Some segments of zero length, some along the rays' axis below.
+                let b = match i % 5 {
+                    0 => a,
+                    1 => a + Vec3::new(0.0, 0.0, 0.2),
+                    _ => a + 0.2 * (point() - 0.5),
+                };
+                FibreSegment { a, b, radius: 0.02 }
+            })
+            .collect();
+        segments.truncate(398);
+        let mut sampler = Sampler::new(11, 12);
+        for i in 0..2000 {
+            let o = Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d());
+            let dir = if i % 3 == 0 {
+                Vec3::Z
+            } else {
+                uniform_sphere(sampler.next_2d())
+            };
+            let ray = Ray::new(o - 0.5 * dir, dir);
+            let t_max = if i % 2 == 0 { 0.7 } else { f32::INFINITY };
+            for chunk in segments.chunks(4) {
+                let t = FibrePack::new(chunk).intersect(&Ray4::new(&ray), t_max);
+                for (lane, seg) in chunk.iter().enumerate() {
+                    let scalar = seg.intersect(&ray, t_max).map_or(f32::INFINITY, |h| h.0);
+                    assert_eq!(t[lane].to_bits(), scalar.to_bits(), "ray {i}, {seg:?}");
+                }
+                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
+            }
+        }
     }
 }

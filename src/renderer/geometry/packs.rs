@@ -35,12 +35,12 @@ pub struct QuadPack {
 /// A ray broadcast to four lanes.
 #[derive(Clone, Copy, Debug)]
 pub struct Ray4 {
-    ox: Vec4,
-    oy: Vec4,
-    oz: Vec4,
-    dx: Vec4,
-    dy: Vec4,
-    dz: Vec4,
+    pub(super) ox: Vec4,
+    pub(super) oy: Vec4,
+    pub(super) oz: Vec4,
+    pub(super) dx: Vec4,
+    pub(super) dy: Vec4,
+    pub(super) dz: Vec4,
 }
 
 impl Ray4 {
