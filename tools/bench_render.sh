@@ -2,8 +2,11 @@
 # Renderer throughput, timed (a bench script, not a test): renders every shipped scene with
 # the reference for a fixed wall time on one thread and prints paths and rays per
 # CPU-second, then the same on two threads and the speed-up of the second thread (paths per
-# wall-second, two threads over one). Run it twice, before and after a change, in one
-# session: these machines are shared, so only ratios measured side by side mean anything.
+# wall-second, two threads over one). For scenes with meshes it adds the ray-casting test of
+# `--stats` (src/renderer/render/raycast.rs): closest-hit rays per second through the scene,
+# and that over obvhs' CWBVH traversing the mesh alone. Run it twice, before and after a
+# change, in one session: these machines are shared, so only ratios measured side by side
+# mean anything.
 #
 # Where Mitsuba 3 is installed (`pip install mitsuba`; its llvm_ad_rgb variant also needs
 # `apt-get install libllvm19`), it then times Mitsuba on the twins of the same scenes
@@ -49,19 +52,25 @@ render() {
         --time "$seconds" --quiet -o "$work/image.exr" --stats "$work/stats.json" >/dev/null
 }
 
-printf '%-16s %14s %14s %12s\n' scene "M paths/CPU-s" "M rays/CPU-s" "2 threads ×"
+printf '%-16s %14s %14s %12s   %s\n' scene "M paths/CPU-s" "M rays/CPU-s" "2 threads ×" \
+    "ray casts, M/s (÷ CWBVH)"
 for scene in "${scenes[@]}"; do
     render "$scene" 1
     paths=$(field "$work/stats.json" paths_per_cpu_second)
     echo "$(basename "$scene" .yaml) $paths" >>"$work/pbrlab.txt"
     rays=$(field "$work/stats.json" rays_per_cpu_second)
     one=$(field "$work/stats.json" paths_per_second)
+    # Scenes with meshes: the --stats ray-casting test (`render::raycast`), one thread.
+    casts=$(python3 -c 'import json, sys
+r = json.load(open(sys.argv[1]))["raycast_vs_obvhs"]
+print("%.2f (%.2f)" % (r["scene_rays_per_second"] / 1e6, r["ratio"]) if r else "")' \
+        "$work/stats.json")
     render "$scene" 2
     two=$(field "$work/stats.json" paths_per_second)
     python3 -c 'import sys
-name, paths, rays, one, two = sys.argv[1], *map(float, sys.argv[2:])
-print(f"{name:<16} {paths / 1e6:14.3f} {rays / 1e6:14.3f} {two / one:12.2f}")' \
-        "$(basename "$scene" .yaml)" "$paths" "$rays" "$one" "$two"
+name, paths, rays, one, two = sys.argv[1], *map(float, sys.argv[2:6])
+print(f"{name:<16} {paths / 1e6:14.3f} {rays / 1e6:14.3f} {two / one:12.2f}   {sys.argv[6]}")' \
+        "$(basename "$scene" .yaml)" "$paths" "$rays" "$one" "$two" "$casts"
 done
 
 echo
