@@ -5,11 +5,11 @@
 //!
 //! obvhs builds the tree (PLOC and reinsertion, as a binary BVH with at most four
 //! primitives per leaf); it is then collapsed to four children per node, nearest child
-//! visited first, and a leaf's triangles are tested together (`TrianglePack`).
-//! obvhs' own compressed wide BVH (CWBVH) is laid out for GPUs: on a CPU core its traversal
-//! decodes quantised boxes at every node and tests one primitive at a time. Measured
-//! against it (`src/renderer/PROFILE.md`): renders of the 115k-triangle knot 1.47 times as
-//! many paths per CPU-second, with the same image bit for bit.
+//! visited first, and a leaf's primitives are tested together (`TrianglePack`,
+//! `FibrePack`). obvhs' own compressed wide BVH (CWBVH) is laid out for GPUs: on a CPU core
+//! its traversal decodes quantised boxes at every node and tests one primitive at a time.
+//! Measured against it (`src/renderer/PROFILE.md`): renders of the 115k-triangle knot 1.3
+//! to 1.46 times as many paths per CPU-second, with the same image bit for bit.
 
 use super::Ray;
 use glam::{BVec4A, Vec4};

@@ -4,7 +4,7 @@ use super::hit::{Hit, ShapeId, offset_epsilon};
 use super::packs::nearest_lane;
 use super::triangle::{TrianglePack, WatertightRay};
 use crate::math::Frame;
-use glam::{Vec3, Vec3A};
+use glam::{Vec3, Vec3A, Vec4};
 use obvhs::aabb::Aabb;
 
 /// Every triangle of the scene's meshes, in world space, under one BVH. Triangles are
@@ -76,7 +76,7 @@ impl TriangleSet {
         let wray = WatertightRay::new(ray);
         self.bvh.any(ray, t_max, |slots, t_max| {
             wray.intersect_pack(&self.packs[slots.start / LEAF_SLOTS], t_max)
-                .cmplt(glam::Vec4::INFINITY)
+                .cmplt(Vec4::INFINITY)
                 .any()
         })
     }
