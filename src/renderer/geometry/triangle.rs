@@ -56,6 +56,8 @@ impl TrianglePack {
 impl WatertightRay {
     /// Precomputes the permutation and shear for `ray`.
     pub fn new(ray: &Ray) -> Self {
+        let d = ray.dir.to_array();
+        let d_origin = ray.origin.to_array();
         let a = ray.dir.abs();
         let kz = if a.x >= a.y && a.x >= a.z {
             0
@@ -64,30 +66,27 @@ impl WatertightRay {
         } else {
             2
         };
-        let mut kx = (kz + 1) % 3;
-        let mut ky = (kx + 1) % 3;
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
         // Swapping keeps the winding, so the sign of the determinant stays meaningful.
-        if ray.dir[kz] < 0.0 {
+        if d[kz] < 0.0 {
             std::mem::swap(&mut kx, &mut ky);
         }
-        let dz = ray.dir[kz];
-        let (sx, sy, sz) = (ray.dir[kx] / dz, ray.dir[ky] / dz, 1.0 / dz);
-        let mut row_x = Vec3::ZERO;
-        let mut row_y = Vec3::ZERO;
-        let mut row_z = Vec3::ZERO;
-        row_x[kx] = 1.0;
-        row_x[kz] = -sx;
-        row_y[ky] = 1.0;
-        row_y[kz] = -sy;
-        row_z[kz] = sz;
-        let splat = |v: Vec3| [Vec4::splat(v.x), Vec4::splat(v.y), Vec4::splat(v.z)];
+        let dz = d[kz];
+        let (sx, sy, sz) = (d[kx] / dz, d[ky] / dz, 1.0 / dz);
+        let mut rows = [[0.0f32; 3]; 3];
+        rows[0][kx] = 1.0;
+        rows[0][kz] = -sx;
+        rows[1][ky] = 1.0;
+        rows[1][kz] = -sy;
+        rows[2][kz] = sz;
+        let splat = |v: [f32; 3]| [Vec4::splat(v[0]), Vec4::splat(v[1]), Vec4::splat(v[2])];
         Self {
             origin: ray.origin,
-            row_x,
-            row_y,
-            row_z,
-            origin4: splat(ray.origin),
-            rows4: [splat(row_x), splat(row_y), splat(row_z)],
+            row_x: Vec3::from_array(rows[0]),
+            row_y: Vec3::from_array(rows[1]),
+            row_z: Vec3::from_array(rows[2]),
+            origin4: splat(d_origin),
+            rows4: [splat(rows[0]), splat(rows[1]), splat(rows[2])],
         }
     }
 

@@ -118,6 +118,7 @@ impl Lights {
     }
 
     /// Picks a light uniformly, then a point (or direction) on it.
+    #[inline]
     pub fn sample(&self, sampler: &mut Sampler) -> Option<LightSample> {
         let n = self.lights.len();
         if n == 0 {
