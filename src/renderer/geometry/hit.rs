@@ -35,6 +35,7 @@ impl Hit {
     /// A ray leaving this surface along the unit direction `dir`. Its origin is pushed off
     /// the surface on the side `dir` points to, so it cannot hit the same surface again at
     /// `t ≈ 0` (which a ray starting exactly on the surface would, by rounding).
+    #[inline]
     pub fn spawn(&self, dir: Vec3) -> Ray {
         Ray::new(self.offset_origin(dir), dir)
     }
@@ -42,6 +43,7 @@ impl Hit {
     /// A ray from this surface towards the point `q`, and the distance along it at which a
     /// shadow test must stop: just short of `q`, so that the surface `q` lies on (a light)
     /// does not count as a blocker. The distance is 0 when `q` is (almost) the hit point.
+    #[inline]
     pub fn spawn_to(&self, q: Vec3) -> (Ray, f32) {
         let d = q - self.p;
         let dist = d.length();

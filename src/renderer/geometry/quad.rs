@@ -87,6 +87,7 @@ impl Quad {
     }
 
     /// The full hit record at distance `t` along `ray`.
+    #[inline]
     pub fn hit(&self, ray: &Ray, t: f32) -> Hit {
         let p = ray.at(t);
         Hit {

@@ -50,6 +50,7 @@ impl Sphere {
     }
 
     /// The full hit record at distance `t` along `ray`.
+    #[inline]
     pub fn hit(&self, ray: &Ray, t: f32) -> Hit {
         let p = ray.at(t);
         let n = ((p - self.center) / self.radius).normalize_or(Vec3::Y);
