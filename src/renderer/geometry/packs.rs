@@ -94,6 +94,11 @@ impl SpherePack {
         let py = fy - b * r.dy;
         let pz = fz - b * r.dz;
         let disc = self.r2 - (px * px + py * py + pz * pz);
+        let valid = disc.cmpge(Vec4::ZERO);
+        // Most rays pass every sphere of a pack: they skip the square root and division.
+        if !valid.any() {
+            return Vec4::INFINITY;
+        }
         let q = -b - b.signum() * disc.max(Vec4::ZERO).sqrt();
         let c = fx * fx + fy * fy + fz * fz - self.r2;
         let a = c / q;
@@ -102,7 +107,7 @@ impl SpherePack {
         let tmax = Vec4::splat(t_max);
         let ok0 = t0.cmpgt(Vec4::ZERO) & t0.cmplt(tmax);
         let ok1 = t1.cmpgt(Vec4::ZERO) & t1.cmplt(tmax);
-        let valid = disc.cmpge(Vec4::ZERO) & q.cmpne(Vec4::ZERO);
+        let valid = valid & q.cmpne(Vec4::ZERO);
         let t = Vec4::select(ok0, t0, Vec4::select(ok1, t1, Vec4::INFINITY));
         Vec4::select(valid, t, Vec4::INFINITY)
     }
@@ -188,5 +193,108 @@ pub fn nearest_lane(t: Vec4, best: f32) -> Option<(f32, usize)> {
         ))
     } else {
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::{Sampler, uniform_sphere};
+    use glam::Vec3;
+
+    /// Rays from random points of the box [-1, 2]³ in random directions, half of them
+    /// aimed at a point from `target` (so that hits are common), a third of them with a
+    /// distance limit.
+    fn rays(sampler: &mut Sampler, target: impl Fn(&mut Sampler) -> Vec3) -> Vec<(Ray, f32)> {
+        (0..4000)
+            .map(|i| {
+                let o =
+                    3.0 * Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d()) - 1.0;
+                let dir = if i % 2 == 0 {
+                    (target(sampler) - o).normalize()
+                } else {
+                    uniform_sphere(sampler.next_2d())
+                };
+                (
+                    Ray::new(o, dir),
+                    if i % 3 == 0 { 0.8 } else { f32::INFINITY },
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_pack_of_spheres_gives_the_scalar_tests_distances_bit_for_bit() {
+        let mut sampler = Sampler::new(13, 14);
+        let spheres: Vec<Sphere> = (0..11)
+            .map(|i| Sphere {
+                center: Vec3::new(sampler.next_1d(), sampler.next_1d(), sampler.next_1d()),
+                radius: [0.01, 0.1, 0.4][i % 3],
+                shape: 0,
+            })
+            .collect();
+        let packs = SpherePack::pack(&spheres);
+        let rays = rays(&mut sampler, |s| {
+            Vec3::new(s.next_1d(), s.next_1d(), s.next_1d())
+        });
+        let mut hits = 0;
+        for (ray, t_max) in &rays {
+            for (pack, chunk) in packs.iter().zip(spheres.chunks(4)) {
+                let t = pack.intersect(&Ray4::new(ray), *t_max);
+                for (lane, sphere) in chunk.iter().enumerate() {
+                    let scalar = sphere.intersect(ray, *t_max).unwrap_or(f32::INFINITY);
+                    assert_eq!(t[lane].to_bits(), scalar.to_bits(), "{ray:?}, {sphere:?}");
+                    hits += scalar.is_finite() as usize;
+                }
+                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
+            }
+        }
+        assert!(hits > 1000, "{hits} hits");
+    }
+
+    #[test]
+    fn a_pack_of_quads_gives_the_scalar_tests_distances_bit_for_bit() {
+        let mut sampler = Sampler::new(15, 16);
+        let point = |s: &mut Sampler| Vec3::new(s.next_1d(), s.next_1d(), s.next_1d());
+        let quads: Vec<Quad> = (0..7)
+            .filter_map(|i| {
+                // Some quads axis-aligned on a grid of eighths, as a box's walls are.
+                let (origin, e1, e2) = if i % 2 == 0 {
+                    (
+                        (8.0 * point(&mut sampler)).floor() / 8.0,
+                        Vec3::X,
+                        0.5 * Vec3::Z,
+                    )
+                } else {
+                    let e = (point(&mut sampler) - 0.5, point(&mut sampler) - 0.5);
+                    (point(&mut sampler), e.0, e.1)
+                };
+                Quad::new(origin, e1, e2, 0)
+            })
+            .collect();
+        let packs = QuadPack::pack(&quads);
+        let mut rays = rays(&mut sampler, point);
+        // Straight down onto the grid quads' corners and edges: u and v exactly 0, ½ or 1.
+        for q in quads.iter().step_by(2) {
+            for u in [0.0, 0.5, 1.0] {
+                for v in [0.0, 0.5, 1.0] {
+                    let above = q.origin + u * q.edge1 + v * q.edge2 + Vec3::Y;
+                    rays.push((Ray::new(above, -Vec3::Y), f32::INFINITY));
+                }
+            }
+        }
+        let mut hits = 0;
+        for (ray, t_max) in &rays {
+            for (pack, chunk) in packs.iter().zip(quads.chunks(4)) {
+                let t = pack.intersect(&Ray4::new(ray), *t_max);
+                for (lane, quad) in chunk.iter().enumerate() {
+                    let scalar = quad.intersect(ray, *t_max).unwrap_or(f32::INFINITY);
+                    assert_eq!(t[lane].to_bits(), scalar.to_bits(), "{ray:?}, {quad:?}");
+                    hits += scalar.is_finite() as usize;
+                }
+                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
+            }
+        }
+        assert!(hits > 500, "{hits} hits");
     }
 }
