@@ -8,7 +8,7 @@ use crate::scene::schema::Strategy;
 use crate::scene::{LoadOptions, Scene};
 use anyhow::{Context, Result, anyhow, bail};
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, PoisonError};
+use std::sync::{Condvar, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
 /// The scene `pbrlab render` renders when none is given.
@@ -379,18 +379,91 @@ struct Job<'a> {
 
 /// A pass's estimate is saved when at least this many times the last save's duration has
 /// gone by since that save ended, so saving (PNG filtering, EXR compression, the
-/// checkpoint) takes at most 1/20 of a render; saving every pass took 6–17 % of a short
-/// one (`src/renderer/PROFILE.md`), with the other threads idle meanwhile. The first pass
-/// is always saved, and the last one at the end.
+/// checkpoint) takes at most 1/20 of a render's CPU time; saving every pass took 6–17 % of
+/// a short one (`src/renderer/PROFILE.md`). The first pass is always saved, and the last
+/// one at the end.
 const SAVE_SPACING: u32 = 19;
 
-/// When a render's estimate was last saved, and the newest state saved since.
+/// The saves of one render. A pass hands its estimate to a saver thread and the render
+/// goes on: saved on the pass's own thread, the other render threads sat idle meanwhile
+/// (two threads kept 1.90 CPUs busy instead of 1.93).
 #[derive(Default)]
 struct Saves {
     /// When the last save ended, and how long it took.
     last: Option<(Instant, Duration)>,
-    /// The state of the newest pass, when it was not saved.
+    /// A state handed to the saver and not taken yet.
+    pending: Option<RenderState>,
+    /// The saver is writing a state.
+    writing: bool,
+    /// The render has ended: the saver stops when nothing is pending.
+    ended: bool,
+    /// The state of the newest pass, when it was neither saved nor handed to the saver.
     unsaved: Option<RenderState>,
+}
+
+/// [`Saves`] shared by the passes and the saver thread.
+#[derive(Default)]
+struct Saver {
+    saves: Mutex<Saves>,
+    wake: Condvar,
+}
+
+impl Saver {
+    fn lock(&self) -> MutexGuard<'_, Saves> {
+        self.saves.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// After a pass: hands `state` to the saver when a save is due and none is under way,
+    /// and keeps it as the unsaved state otherwise.
+    fn pass(&self, state: &RenderState) {
+        let mut saves = self.lock();
+        let due = !saves.writing
+            && saves.pending.is_none()
+            && saves
+                .last
+                .is_none_or(|(end, took)| end.elapsed() >= took * SAVE_SPACING);
+        if due {
+            saves.pending = Some(state.clone());
+            saves.unsaved = None;
+            self.wake.notify_one();
+        } else {
+            saves.unsaved = Some(state.clone());
+        }
+    }
+
+    /// The saver thread: writes each state handed to it with `write` until the render
+    /// has ended and nothing is pending.
+    fn run(&self, write: impl Fn(&RenderState) -> Result<()>) {
+        loop {
+            let state = {
+                let mut saves = self.lock();
+                while saves.pending.is_none() && !saves.ended {
+                    saves = self
+                        .wake
+                        .wait(saves)
+                        .unwrap_or_else(PoisonError::into_inner);
+                }
+                let Some(state) = saves.pending.take() else {
+                    return;
+                };
+                saves.writing = true;
+                state
+            };
+            let began = Instant::now();
+            if let Err(e) = write(&state) {
+                eprintln!("warning: could not save the current estimate: {e:#}");
+            }
+            let mut saves = self.lock();
+            saves.last = Some((Instant::now(), began.elapsed()));
+            saves.writing = false;
+        }
+    }
+
+    /// The render has ended: the saver finishes what it was handed, then stops.
+    fn end(&self) {
+        self.lock().ended = true;
+        self.wake.notify_one();
+    }
 }
 
 impl Job<'_> {
@@ -405,23 +478,8 @@ impl Job<'_> {
             output::write_both(self.output, &state.film.mean())
                 .and_then(|_| checkpoint::save(checkpoint_path, origin, state))
         };
-        let saves = Mutex::new(Saves::default());
-        let save = |state: &RenderState| {
-            let mut saves = saves.lock().unwrap_or_else(PoisonError::into_inner);
-            let due = saves
-                .last
-                .is_none_or(|(end, took)| end.elapsed() >= took * SAVE_SPACING);
-            if !due {
-                saves.unsaved = Some(state.clone());
-                return;
-            }
-            let began = Instant::now();
-            if let Err(e) = write(state) {
-                eprintln!("warning: could not save the current estimate: {e:#}");
-            }
-            saves.last = Some((Instant::now(), began.elapsed()));
-            saves.unsaved = None;
-        };
+        let saver = Saver::default();
+        let save = |state: &RenderState| saver.pass(state);
         let options = RenderOptions {
             spp: self.scene.settings().spp,
             seed: self.scene.settings().seed,
@@ -429,10 +487,16 @@ impl Job<'_> {
             time_limit: self.time_limit,
             on_pass: Some(&save),
         };
-        let rendered = catch_task_panic(|| render(&options, start));
+        let rendered = std::thread::scope(|scope| {
+            scope.spawn(|| saver.run(write));
+            let rendered = catch_task_panic(|| render(&options, start));
+            saver.end();
+            rendered
+        });
         // What the passes since the last save computed is kept, whether or not the render
         // finished.
-        let unsaved = saves
+        let unsaved = saver
+            .saves
             .into_inner()
             .unwrap_or_else(PoisonError::into_inner)
             .unsaved;
@@ -482,6 +546,52 @@ fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Passes of 1, 2, … spp at `pace`, with a saver whose writes take `write_time`: the
+    /// spp of the states it wrote, and the spp of the state left unsaved.
+    fn saved_passes(passes: u32, pace: Duration, write_time: Duration) -> (Vec<u32>, Option<u32>) {
+        let saver = Saver::default();
+        let written = Mutex::new(Vec::new());
+        std::thread::scope(|scope| {
+            scope.spawn(|| {
+                saver.run(|state: &RenderState| {
+                    std::thread::sleep(write_time);
+                    written.lock().unwrap().push(state.spp_done);
+                    Ok(())
+                })
+            });
+            let mut state = RenderState::new(2, 2, 1);
+            for _ in 0..passes {
+                state.spp_done += 1;
+                saver.pass(&state);
+                std::thread::sleep(pace);
+            }
+            saver.end();
+        });
+        let unsaved = saver.saves.into_inner().unwrap().unsaved;
+        (written.into_inner().unwrap(), unsaved.map(|s| s.spp_done))
+    }
+
+    #[test]
+    fn the_saver_writes_the_first_pass_and_keeps_the_last_one() {
+        // Writes slower than passes: the first pass is written, the passes meanwhile are
+        // not, and the last one is left to the caller unless the saver took it.
+        let (written, unsaved) =
+            saved_passes(30, Duration::from_millis(1), Duration::from_millis(40));
+        assert_eq!(written.first(), Some(&1), "{written:?}");
+        assert!(written.len() < 5, "{written:?}");
+        assert!(written.windows(2).all(|w| w[0] < w[1]), "{written:?}");
+        assert!(
+            written.last() == Some(&30) || unsaved == Some(30),
+            "the last pass is lost: {written:?}, unsaved {unsaved:?}"
+        );
+        // Quick writes, far apart: the passes are written one after the other, and the
+        // last one is written or left to the caller.
+        let (written, unsaved) =
+            saved_passes(4, Duration::from_millis(50), Duration::from_millis(1));
+        assert!(written.len() >= 2 && written[0] == 1, "{written:?}");
+        assert!(written.last() == Some(&4) || unsaved == Some(4));
+    }
 
     #[test]
     fn durations_take_seconds_minutes_and_hours() {
