@@ -2,7 +2,7 @@
 # Renderer throughput, timed (a bench script, not a test): renders every shipped scene with
 # the reference for a fixed wall time on one thread and prints paths and rays per
 # CPU-second, then the same on two threads and the speed-up of the second thread (paths per
-# wall-second, two threads over one). For scenes with meshes it adds the ray-casting test of
+# wall-second, two threads over one) beside the CPUs the two threads kept busy. For scenes with meshes it adds the ray-casting test of
 # `--stats` (src/renderer/render/raycast.rs): closest-hit rays per second through the scene,
 # and that over obvhs' CWBVH traversing the mesh alone. Run it twice, before and after a
 # change, in one session: these machines are shared, so only ratios measured side by side
@@ -52,8 +52,8 @@ render() {
         --time "$seconds" --quiet -o "$work/image.exr" --stats "$work/stats.json" >/dev/null
 }
 
-printf '%-16s %14s %14s %12s   %s\n' scene "M paths/CPU-s" "M rays/CPU-s" "2 threads ×" \
-    "ray casts, M/s (÷ CWBVH)"
+printf '%-16s %14s %14s %12s %10s   %s\n' scene "M paths/CPU-s" "M rays/CPU-s" "2 threads ×" \
+    "CPUs busy" "ray casts, M/s (÷ CWBVH)"
 for scene in "${scenes[@]}"; do
     render "$scene" 1
     paths=$(field "$work/stats.json" paths_per_cpu_second)
@@ -67,10 +67,15 @@ print("%.2f (%.2f)" % (r["scene_rays_per_second"] / 1e6, r["ratio"]) if r else "
         "$work/stats.json")
     render "$scene" 2
     two=$(field "$work/stats.json" paths_per_second)
+    # CPU-seconds per wall-second of the two-thread render: below 2, its threads waited
+    # (or the machine gave them less); the speed-up cannot exceed it.
+    busy=$(python3 -c 'import json, sys
+s = json.load(open(sys.argv[1]))["stats"]
+print(s["cpu_seconds"] / s["wall_seconds"])' "$work/stats.json")
     python3 -c 'import sys
-name, paths, rays, one, two = sys.argv[1], *map(float, sys.argv[2:6])
-print(f"{name:<16} {paths / 1e6:14.3f} {rays / 1e6:14.3f} {two / one:12.2f}   {sys.argv[6]}")' \
-        "$(basename "$scene" .yaml)" "$paths" "$rays" "$one" "$two" "$casts"
+name, paths, rays, one, two, busy = sys.argv[1], *map(float, sys.argv[2:7])
+print(f"{name:<16} {paths / 1e6:14.3f} {rays / 1e6:14.3f} {two / one:12.2f} {busy:10.2f}   {sys.argv[7]}")' \
+        "$(basename "$scene" .yaml)" "$paths" "$rays" "$one" "$two" "$busy" "$casts"
 done
 
 echo
