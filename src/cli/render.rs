@@ -379,9 +379,8 @@ struct Job<'a> {
 
 /// A pass's estimate is saved when at least this many times the last save's duration has
 /// gone by since that save ended, so saving (PNG filtering, EXR compression, the
-/// checkpoint) takes at most 1/20 of a render's CPU time; saving every pass took 6–17 % of
-/// a short one (`src/renderer/PROFILE.md`). The first pass is always saved, and the last
-/// one at the end.
+/// checkpoint) takes at most 1/20 of a render's CPU time (saving every pass took 6–17 % of
+/// a short one). The first pass is always saved, and the last one at the end.
 const SAVE_SPACING: u32 = 19;
 
 /// The saves of one render. A pass hands its estimate to a saver thread and the render
