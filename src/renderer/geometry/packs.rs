@@ -223,6 +223,30 @@ mod tests {
             .collect()
     }
 
+    /// Asserts that pack `k` (`pack(k, ray, t_max)`) gives, in each lane, what `scalar`
+    /// gives for shape `4k + lane`, bit for bit, and +∞ in the unused lanes, for every
+    /// ray. Returns how many shapes the rays hit.
+    fn same_distances<S: std::fmt::Debug>(
+        rays: &[(Ray, f32)],
+        shapes: &[S],
+        pack: impl Fn(usize, &Ray4, f32) -> Vec4,
+        scalar: impl Fn(&S, &Ray, f32) -> Option<f32>,
+    ) -> usize {
+        let mut hits = 0;
+        for (ray, t_max) in rays {
+            for (k, chunk) in shapes.chunks(4).enumerate() {
+                let t = pack(k, &Ray4::new(ray), *t_max);
+                for (lane, shape) in chunk.iter().enumerate() {
+                    let expected = scalar(shape, ray, *t_max).unwrap_or(f32::INFINITY);
+                    assert_eq!(t[lane].to_bits(), expected.to_bits(), "{ray:?}, {shape:?}");
+                    hits += expected.is_finite() as usize;
+                }
+                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
+            }
+        }
+        hits
+    }
+
     #[test]
     fn a_pack_of_spheres_gives_the_scalar_tests_distances_bit_for_bit() {
         let mut sampler = Sampler::new(13, 14);
@@ -237,18 +261,12 @@ mod tests {
         let rays = rays(&mut sampler, |s| {
             Vec3::new(s.next_1d(), s.next_1d(), s.next_1d())
         });
-        let mut hits = 0;
-        for (ray, t_max) in &rays {
-            for (pack, chunk) in packs.iter().zip(spheres.chunks(4)) {
-                let t = pack.intersect(&Ray4::new(ray), *t_max);
-                for (lane, sphere) in chunk.iter().enumerate() {
-                    let scalar = sphere.intersect(ray, *t_max).unwrap_or(f32::INFINITY);
-                    assert_eq!(t[lane].to_bits(), scalar.to_bits(), "{ray:?}, {sphere:?}");
-                    hits += scalar.is_finite() as usize;
-                }
-                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
-            }
-        }
+        let hits = same_distances(
+            &rays,
+            &spheres,
+            |k, r, t_max| packs[k].intersect(r, t_max),
+            Sphere::intersect,
+        );
         assert!(hits > 1000, "{hits} hits");
     }
 
@@ -283,18 +301,12 @@ mod tests {
                 }
             }
         }
-        let mut hits = 0;
-        for (ray, t_max) in &rays {
-            for (pack, chunk) in packs.iter().zip(quads.chunks(4)) {
-                let t = pack.intersect(&Ray4::new(ray), *t_max);
-                for (lane, quad) in chunk.iter().enumerate() {
-                    let scalar = quad.intersect(ray, *t_max).unwrap_or(f32::INFINITY);
-                    assert_eq!(t[lane].to_bits(), scalar.to_bits(), "{ray:?}, {quad:?}");
-                    hits += scalar.is_finite() as usize;
-                }
-                assert!(t.to_array()[chunk.len()..].iter().all(|t| t.is_infinite()));
-            }
-        }
+        let hits = same_distances(
+            &rays,
+            &quads,
+            |k, r, t_max| packs[k].intersect(r, t_max),
+            Quad::intersect,
+        );
         assert!(hits > 500, "{hits} hits");
     }
 }
