@@ -1,6 +1,8 @@
 //! Analytic shapes tested four at a time: spheres and quads stored as structures of arrays
-//! of four lanes (glam's SIMD `Vec4`), intersected without branches. A scene has few of
-//! them, and testing them all this way costs less than one mispredicted branch each.
+//! of four lanes (glam's SIMD `Vec4`), intersected without a branch per shape. A scene has
+//! few of them, and testing them all this way costs less than one mispredicted branch each.
+//! The one branch is a sphere pack's return when the ray passes all four spheres, before
+//! the square root and division that make the longest chain of a ray's test.
 
 use super::{Quad, Ray, Sphere};
 use glam::{BVec4A, Vec4};
