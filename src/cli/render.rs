@@ -545,51 +545,73 @@ fn catch_task_panic<R>(f: impl FnOnce() -> R) -> Result<R> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::mpsc;
 
-    /// Passes of 1, 2, … spp at `pace`, with a saver whose writes take `write_time`: the
-    /// spp of the states it wrote, and the spp of the state left unsaved.
-    fn saved_passes(passes: u32, pace: Duration, write_time: Duration) -> (Vec<u32>, Option<u32>) {
-        let saver = Saver::default();
-        let written = Mutex::new(Vec::new());
-        std::thread::scope(|scope| {
-            scope.spawn(|| {
-                saver.run(|state: &RenderState| {
-                    std::thread::sleep(write_time);
-                    written.lock().unwrap().push(state.spp_done);
-                    Ok(())
-                })
-            });
-            let mut state = RenderState::new(2, 2, 1);
-            for _ in 0..passes {
-                state.spp_done += 1;
-                saver.pass(&state);
-                std::thread::sleep(pace);
-            }
-            saver.end();
-        });
-        let unsaved = saver.saves.into_inner().unwrap().unsaved;
-        (written.into_inner().unwrap(), unsaved.map(|s| s.spp_done))
+    /// Waits at most 10 s for a message: a lost handover fails instead of hanging.
+    fn receive<T>(from: &mpsc::Receiver<T>) -> T {
+        from.recv_timeout(Duration::from_secs(10))
+            .expect("the saver did not answer")
     }
 
     #[test]
-    fn the_saver_writes_the_first_pass_and_keeps_the_last_one() {
-        // Writes slower than passes: the first pass is written, the passes meanwhile are
-        // not, and the last one is left to the caller unless the saver took it.
-        let (written, unsaved) =
-            saved_passes(30, Duration::from_millis(1), Duration::from_millis(40));
-        assert_eq!(written.first(), Some(&1), "{written:?}");
-        assert!(written.len() < 5, "{written:?}");
-        assert!(written.windows(2).all(|w| w[0] < w[1]), "{written:?}");
+    fn passes_go_on_while_the_saver_writes_and_the_last_one_is_kept() {
+        let saver = Saver::default();
+        let (started, saver_started) = mpsc::channel();
+        let (release, released) = mpsc::channel::<()>();
+        let written = Mutex::new(Vec::new());
+        let (saver_ref, written_ref) = (&saver, &written);
+        let mut last = RenderState::new(2, 2, 1);
+        std::thread::scope(|scope| {
+            scope.spawn(move || {
+                saver_ref.run(|state: &RenderState| {
+                    started.send(state.spp_done).unwrap();
+                    if state.spp_done == 1 {
+                        receive(&released);
+                    }
+                    written_ref.lock().unwrap().push(state.spp_done);
+                    Ok(())
+                })
+            });
+            // Ends the saver however this thread leaves the scope, so that a failed
+            // assertion fails the test instead of leaving it waiting for the saver.
+            struct EndOnDrop<'a>(&'a Saver);
+            impl Drop for EndOnDrop<'_> {
+                fn drop(&mut self) {
+                    self.0.end();
+                }
+            }
+            let _end = EndOnDrop(saver_ref);
+            // The first pass is handed over; the passes during its save are kept, the
+            // newest only.
+            last.spp_done = 1;
+            saver.pass(&last);
+            assert_eq!(receive(&saver_started), 1);
+            for spp in 2..=5 {
+                last.spp_done = spp;
+                saver.pass(&last);
+            }
+            let unsaved = saver.lock().unsaved.as_ref().map(|s| s.spp_done);
+            assert_eq!(unsaved, Some(5));
+            release.send(()).unwrap();
+            // Once the spacing after that save has gone by, a pass is saved again.
+            let deadline = Instant::now() + Duration::from_secs(10);
+            while written.lock().unwrap().len() < 2 {
+                assert!(Instant::now() < deadline, "no second save");
+                std::thread::sleep(Duration::from_millis(2));
+                last.spp_done += 1;
+                saver.pass(&last);
+            }
+        });
+        let written = written.into_inner().unwrap();
+        assert!(written[0] == 1 && written[1] > 5, "{written:?}");
+        // The last pass is written, or left for the end of the render.
+        let unsaved = saver.saves.into_inner().unwrap().unsaved;
         assert!(
-            written.last() == Some(&30) || unsaved == Some(30),
-            "the last pass is lost: {written:?}, unsaved {unsaved:?}"
+            written.last() == Some(&last.spp_done)
+                || unsaved.map(|s| s.spp_done) == Some(last.spp_done),
+            "{written:?}, last pass {}",
+            last.spp_done
         );
-        // Quick writes, far apart: the passes are written one after the other, and the
-        // last one is written or left to the caller.
-        let (written, unsaved) =
-            saved_passes(4, Duration::from_millis(50), Duration::from_millis(1));
-        assert!(written.len() >= 2 && written[0] == 1, "{written:?}");
-        assert!(written.last() == Some(&4) || unsaved == Some(4));
     }
 
     #[test]
