@@ -7,23 +7,19 @@ use glam::{DVec3, Vec3, Vec4};
 /// functions, which give every point of a shared edge to exactly one of the two triangles
 /// (or both): no ray slips between neighbouring triangles, unlike the Möller-Trumbore test.
 ///
-/// The scalar test, [`WatertightRay::intersect`], folds the permutation and shear into
-/// three row vectors, so a vertex `a` (relative to the origin) maps to
-/// `(a·row_x, a·row_y, a·row_z)`: each row has at most two non-zero entries, so the dot
-/// products round exactly as `a[kx] − sx a[kz]` does.
-///
-/// [`WatertightRay::intersect_pack`] tests four triangles at once, lane by lane, with the
-/// permuted axes and the shear themselves (22 % fewer instructions than the rows' dot
-/// products), so it finds the same distances as the scalar test bit for bit.
+/// A vertex `a` relative to the origin maps to `(a[kx] − sx a[kz], a[ky] − sy a[kz],
+/// sz a[kz])`, with the axes `kx, ky, kz` and the shear `sx, sy, sz` of the paper.
+/// [`WatertightRay::intersect_pack`] tests four triangles at once with the same operations
+/// in the same order as the scalar [`WatertightRay::intersect`], lane by lane, so it finds
+/// the same distances bit for bit.
 #[derive(Clone, Copy, Debug)]
 pub struct WatertightRay {
-    origin: Vec3,
-    row_x: Vec3,
-    row_y: Vec3,
-    row_z: Vec3,
-    /// For [`WatertightRay::intersect_pack`]: the axes `[kx, ky, kz]`, the origin's
-    /// coordinates on them and the shear `[−sx, −sy, sz]`, each in all four lanes.
+    /// The axes `[kx, ky, kz]`.
     axes: [usize; 3],
+    /// The origin's coordinates on the axes `kx, ky, kz`, and the shear `[−sx, −sy, sz]`.
+    origin: [f32; 3],
+    shear: [f32; 3],
+    /// `origin` and `shear`, each in all four lanes.
     origin4: [Vec4; 3],
     shear4: [Vec4; 3],
 }
@@ -60,7 +56,7 @@ impl WatertightRay {
     /// Precomputes the permutation and shear for `ray`.
     pub fn new(ray: &Ray) -> Self {
         let d = ray.dir.to_array();
-        let d_origin = ray.origin.to_array();
+        let o = ray.origin.to_array();
         let a = ray.dir.abs();
         let kz = if a.x >= a.y && a.x >= a.z {
             0
@@ -75,25 +71,15 @@ impl WatertightRay {
             std::mem::swap(&mut kx, &mut ky);
         }
         let dz = d[kz];
-        let (sx, sy, sz) = (d[kx] / dz, d[ky] / dz, 1.0 / dz);
-        let mut rows = [[0.0f32; 3]; 3];
-        rows[0][kx] = 1.0;
-        rows[0][kz] = -sx;
-        rows[1][ky] = 1.0;
-        rows[1][kz] = -sy;
-        rows[2][kz] = sz;
+        let origin = [o[kx], o[ky], o[kz]];
+        let shear = [-d[kx] / dz, -d[ky] / dz, 1.0 / dz];
+        let splat = |v: [f32; 3]| [Vec4::splat(v[0]), Vec4::splat(v[1]), Vec4::splat(v[2])];
         Self {
-            origin: ray.origin,
-            row_x: Vec3::from_array(rows[0]),
-            row_y: Vec3::from_array(rows[1]),
-            row_z: Vec3::from_array(rows[2]),
             axes: [kx, ky, kz],
-            origin4: [
-                Vec4::splat(d_origin[kx]),
-                Vec4::splat(d_origin[ky]),
-                Vec4::splat(d_origin[kz]),
-            ],
-            shear4: [Vec4::splat(-sx), Vec4::splat(-sy), Vec4::splat(sz)],
+            origin,
+            shear,
+            origin4: splat(origin),
+            shear4: splat(shear),
         }
     }
 
@@ -102,9 +88,6 @@ impl WatertightRay {
     /// function of exactly zero is decided by that scalar test (in double precision).
     #[inline]
     pub fn intersect_pack(&self, pack: &TrianglePack, t_max: f32) -> Vec4 {
-        // The rows' dot products with a zero entry dropped: `a·row_x` is
-        // `a[kx] + 0 + (−sx a[kz])` in some order, which rounds as `a[kx] − sx a[kz]` does
-        // (adding zero is exact), and `a·row_z` is `sz a[kz]`.
         let [kx, ky, kz] = self.axes;
         let [ox, oy, oz] = &self.origin4;
         let [nsx, nsy, sz] = &self.shear4;
@@ -145,15 +128,15 @@ impl WatertightRay {
     /// Both faces count.
     #[inline]
     pub fn intersect(&self, v: &[Vec3; 3], t_max: f32) -> Option<f32> {
-        let a = v[0] - self.origin;
-        let b = v[1] - self.origin;
-        let c = v[2] - self.origin;
-        let ax = a.dot(self.row_x);
-        let ay = a.dot(self.row_y);
-        let bx = b.dot(self.row_x);
-        let by = b.dot(self.row_y);
-        let cx = c.dot(self.row_x);
-        let cy = c.dot(self.row_y);
+        let [kx, ky, kz] = self.axes;
+        let [ox, oy, oz] = self.origin;
+        let [nsx, nsy, sz] = self.shear;
+        let sheared = |v: Vec3| {
+            let z = v[kz] - oz;
+            ((v[kx] - ox) + nsx * z, (v[ky] - oy) + nsy * z, sz * z)
+        };
+        let ((ax, ay, az), (bx, by, bz), (cx, cy, cz)) =
+            (sheared(v[0]), sheared(v[1]), sheared(v[2]));
         let mut u = cx * by - cy * bx;
         let mut v_ = ax * cy - ay * cx;
         let mut w = bx * ay - by * ax;
@@ -174,7 +157,7 @@ impl WatertightRay {
         if det == 0.0 {
             return None;
         }
-        let t_scaled = u * a.dot(self.row_z) + v_ * b.dot(self.row_z) + w * c.dot(self.row_z);
+        let t_scaled = u * az + v_ * bz + w * cz;
         if det < 0.0 && (t_scaled >= 0.0 || t_scaled <= t_max * det)
             || det > 0.0 && (t_scaled <= 0.0 || t_scaled >= t_max * det)
         {
