@@ -16,11 +16,10 @@ use glam::{DVec3, Vec3, Vec4};
 pub struct WatertightRay {
     /// The axes `[kx, ky, kz]`.
     axes: [usize; 3],
-    /// The origin's coordinates on the axes `kx, ky, kz`, and the shear `[−sx, −sy, sz]`.
-    origin: [f32; 3],
-    shear: [f32; 3],
-    /// `origin` and `shear`, each in all four lanes.
+    /// The origin's coordinates on the axes `kx, ky, kz`, each in all four lanes (the
+    /// scalar test reads lane x).
     origin4: [Vec4; 3],
+    /// The shear `[−sx, −sy, sz]`, each in all four lanes.
     shear4: [Vec4; 3],
 }
 
@@ -76,8 +75,6 @@ impl WatertightRay {
         let splat = |v: [f32; 3]| [Vec4::splat(v[0]), Vec4::splat(v[1]), Vec4::splat(v[2])];
         Self {
             axes: [kx, ky, kz],
-            origin,
-            shear,
             origin4: splat(origin),
             shear4: splat(shear),
         }
@@ -129,8 +126,8 @@ impl WatertightRay {
     #[inline]
     pub fn intersect(&self, v: &[Vec3; 3], t_max: f32) -> Option<f32> {
         let [kx, ky, kz] = self.axes;
-        let [ox, oy, oz] = self.origin;
-        let [nsx, nsy, sz] = self.shear;
+        let [ox, oy, oz] = self.origin4.map(|v| v.x);
+        let [nsx, nsy, sz] = self.shear4.map(|v| v.x);
         let sheared = |v: Vec3| {
             let z = v[kz] - oz;
             ((v[kx] - ox) + nsx * z, (v[ky] - oy) + nsy * z, sz * z)
