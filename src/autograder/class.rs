@@ -388,6 +388,7 @@ impl ClassRun<'_> {
             echo: self.progress,
             deadline: Duration::from_secs(3600),
             offline: false,
+            output: None,
             bounded: false,
         }
         .run()
@@ -435,15 +436,14 @@ impl ClassRun<'_> {
                 echo: false,
                 deadline: Duration::from_secs(600),
                 offline: false,
+                // This submission's own: the next build cannot replace it while it grades.
+                // Its folder lets others through (not list it), so that a worker run as a
+                // user of its own can start it.
+                output: Some(scratch.path()),
                 bounded: true,
             }
             .run()
             .context("the submission did not build")?;
-            // The next build overwrites the worker in the target folder: this one's copy. Its
-            // folder lets others through (not list it), so that a worker run as a user of its
-            // own can start it.
-            std::fs::copy(&record.worker, scratch.path().join(WORKER_BINARY))
-                .context("copying the worker")?;
             Ok((scratch, record.errors()))
         })();
         match prepared {

@@ -102,6 +102,7 @@ impl Submission<'_> {
             echo: false,
             deadline: time,
             offline: true,
+            output: Some(scratch.path()),
             bounded: true,
         }
         .run()

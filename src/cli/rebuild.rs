@@ -102,6 +102,7 @@ fn rebuild_if_stale(exe: &Path) -> anyhow::Result<StudentBinaries> {
         echo: true,
         deadline: BUILD_DEADLINE,
         offline: false,
+        output: None,
         bounded: false,
     }
     .run()

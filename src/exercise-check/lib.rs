@@ -6,10 +6,18 @@
 //!
 //! Two principles:
 //! - **Fail closed.** A file the check cannot read as Rust tokens is refused at the line
-//!   where reading stopped, never handed to rustc unchecked. So is every byte sequence the
-//!   check and rustc could read differently: a byte-order mark, a leading `#!` line (rustc
-//!   skips it), whitespace other than space, tab and newline, control and text-direction
-//!   characters. Attributes come from an allow-list.
+//!   where reading stopped (at the unusual character that stopped it, where one did: a
+//!   control or invisible character in code), never handed to rustc unchecked. (Its lexer
+//!   skips every Unicode space, rustc only Rust's: a no-break space in code passes here and
+//!   rustc refuses it, with its own message.) So are a leading `#!` line (rustc skips it unread) and text-direction
+//!   characters anywhere (they make code read differently from how it compiles). What the
+//!   lexer reads as a comment or a literal is free: a no-break space pasted into a comment
+//!   compiles, as it does with rustc. A leading byte-order mark is skipped, as rustc skips
+//!   it. Brackets nest at most [`MAX_DEPTH`] deep. Attributes come from an allow-list.
+//! - **A second line.** What the build can read is bounded by its view of the file system
+//!   (`pbrlab::grade::build_view`), not by this check: macro expansion can assemble any
+//!   construct from accepted pieces. The check refuses only what a correct solution never
+//!   needs, so that a student learns of a reach outside the crate at its line.
 //! - **Refuse constructs, never names.** `let path = …`, `let env = …`, `fn include(…)` and
 //!   `let asm = …` are ordinary code. What is refused is the attribute (`#[path]`), the macro
 //!   call (`include!`, `env!`, `asm!`, …), the declaration (`mod x;`, `extern crate`), and the
@@ -89,13 +97,18 @@ const ATTRIBUTES: &[&str] = &[
     "diagnostic",
 ];
 
+/// The deepest nesting of brackets an exercise file may have (no solution comes near it; a
+/// deeper file would only test the stack of whatever reads it).
+pub const MAX_DEPTH: usize = 256;
+
 /// Every refused construct in the exercise file `text`, in file order. Empty means the file
 /// may be compiled.
 pub fn check(text: &str) -> Vec<Finding> {
-    let characters = unusual_characters(text);
-    if !characters.is_empty() {
-        // The lexer below might split such a file differently from rustc: stop here.
-        return characters;
+    // rustc skips a byte-order mark at the start; so does this check.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let direction = direction_controls(text);
+    if !direction.is_empty() {
+        return direction;
     }
     if text.starts_with("#!") && !text.starts_with("#![") {
         return vec![Finding {
@@ -109,6 +122,11 @@ pub fn check(text: &str) -> Vec<Finding> {
     let tokens = match text.parse::<TokenStream>() {
         Ok(tokens) => tokens,
         Err(e) => {
+            // The lexer stopped: at an unusual character, where the file has one.
+            let characters = unusual_characters(text);
+            if !characters.is_empty() {
+                return characters;
+            }
             let at = e.span().start();
             return vec![Finding {
                 line: at.line.max(1),
@@ -121,13 +139,21 @@ pub fn check(text: &str) -> Vec<Finding> {
         }
     };
     let mut found = Vec::new();
-    walk(tokens, false, &mut found);
+    walk(tokens, false, 0, &mut found);
     found.sort_by_key(|f| (f.line, f.column));
     found
 }
 
-/// Characters rustc and the token check could read differently, or that make code read
-/// differently from how it compiles.
+/// Text-direction controls anywhere in `text` (CVE-2021-42574, "Trojan Source").
+fn direction_controls(text: &str) -> Vec<Finding> {
+    unusual_characters(text)
+        .into_iter()
+        .filter(|f| f.why.starts_with("the text-direction control"))
+        .collect()
+}
+
+/// Characters outside printable text, spaces and tabs, each with what it is: where the
+/// lexer fails, the likely reason.
 fn unusual_characters(text: &str) -> Vec<Finding> {
     let mut found = Vec::new();
     for (index, line) in text.split('\n').enumerate() {
@@ -194,20 +220,31 @@ fn finding(token: &TokenTree, why: String) -> Finding {
     }
 }
 
-/// Walks one level of tokens; `in_use` is true inside a `use` declaration.
-fn walk(stream: TokenStream, in_use: bool, found: &mut Vec<Finding>) {
+/// Walks one level of tokens, `depth` brackets deep; `in_use` is true inside a `use`
+/// declaration.
+fn walk(stream: TokenStream, in_use: bool, depth: usize, found: &mut Vec<Finding>) {
     let tokens: Vec<TokenTree> = stream.into_iter().collect();
     let mut in_use = in_use;
     for (i, token) in tokens.iter().enumerate() {
         let at = |offset: isize| i.checked_add_signed(offset).and_then(|j| tokens.get(j));
         match token {
+            TokenTree::Group(_) if depth >= MAX_DEPTH => {
+                found.push(finding(
+                    token,
+                    format!(
+                        "brackets nested more than {MAX_DEPTH} deep: split the expression with \
+                         `let` bindings or functions"
+                    ),
+                ));
+                return;
+            }
             TokenTree::Group(group) => {
                 let attribute = group.delimiter() == Delimiter::Bracket
                     && (punct(at(-1), '#') || (punct(at(-1), '!') && punct(at(-2), '#')));
                 if attribute {
-                    attribute_paths(group.stream(), found);
+                    attribute_paths(group.stream(), depth, found);
                 }
-                walk(group.stream(), in_use, found);
+                walk(group.stream(), in_use, depth + 1, found);
             }
             TokenTree::Ident(id) => {
                 let text = id.to_string();
@@ -318,7 +355,7 @@ fn bang(before: &[TokenTree]) -> Option<String> {
 
 /// Checks the attribute paths in one attribute's brackets (`#[…]` or `#![…]`), and those a
 /// `cfg_attr` applies.
-fn attribute_paths(stream: TokenStream, found: &mut Vec<Finding>) {
+fn attribute_paths(stream: TokenStream, depth: usize, found: &mut Vec<Finding>) {
     let tokens: Vec<TokenTree> = stream.into_iter().collect();
     let Some(first) = tokens.first() else {
         return;
@@ -361,8 +398,11 @@ fn attribute_paths(stream: TokenStream, found: &mut Vec<Finding>) {
         if !current.is_empty() {
             parts.push(current);
         }
-        for part in parts {
-            attribute_paths(part.into_iter().collect(), found);
+        // Nested deeper than `walk` goes, the attribute is refused there.
+        if depth < MAX_DEPTH {
+            for part in parts {
+                attribute_paths(part.into_iter().collect(), depth + 1, found);
+            }
         }
     }
 }

@@ -206,16 +206,40 @@ fn refused() -> Vec<(&'static str, String, usize)> {
             1,
         ),
         (
-            "a byte-order mark",
+            "a refused macro after a byte-order mark",
             "\u{feff}const X: &str = include_str!(\"x\");\n".to_string(),
             1,
         ),
-        ("a line separator", file("fn f() {}\u{2028}"), 2),
-        ("a next-line character", file("\nfn f() {}\u{85}"), 3),
-        ("a no-break space", file("fn\u{a0}f() {}"), 2),
-        ("a left-to-right mark", file("fn f() {\u{200e}}"), 2),
-        ("a text-direction override", file("// \u{202e} hidden"), 2),
-        ("a form feed", file("\u{c}fn f() {}"), 2),
+        ("a zero-width space in code", file("fn f\u{200b}() {}"), 2),
+        ("a control character in code", file("fn f() {}\u{7}"), 2),
+        (
+            "a text-direction override in a comment",
+            file("// \u{202e} hidden"),
+            2,
+        ),
+        (
+            "a text-direction isolate in a string",
+            file("const S: &str = \"\u{2066}x\";"),
+            2,
+        ),
+        (
+            "brackets nested deeper than the check reads",
+            file(&format!(
+                "const X: u8 = {}0{};",
+                "(".repeat(30_000),
+                ")".repeat(30_000)
+            )),
+            2,
+        ),
+        (
+            "cfg_attr nested deeper than the check reads",
+            file(&format!(
+                "#[{}path = \"x\"{}]\nmod s {{}}",
+                "cfg_attr(all(), ".repeat(5_000),
+                ")".repeat(5_000)
+            )),
+            2,
+        ),
         (
             "an unclosed string",
             file("fn f() {}\nconst S: &str = \"open;\n"),
@@ -223,6 +247,46 @@ fn refused() -> Vec<(&'static str, String, usize)> {
         ),
         ("an unclosed bracket", file("fn f() {\n"), 2),
     ]
+}
+
+/// What rustc compiles and a correct solution may hold: unusual characters in comments and
+/// literals (pasted from a PDF or another language), a leading byte-order mark, and the
+/// whitespace rustc and the check's lexer both skip.
+#[test]
+fn comments_literals_and_a_byte_order_mark_are_free() {
+    for (what, text) in [
+        (
+            "a no-break space in a comment",
+            file("// cos\u{a0}θ, see §1.2\nfn f() {}"),
+        ),
+        (
+            "a no-break space in a block comment",
+            file("/* a\u{a0}b */ fn f() {}"),
+        ),
+        (
+            "a zero-width space in a doc comment",
+            file("/// x\u{200b}y\nfn f() {}"),
+        ),
+        (
+            "a no-break space in a string",
+            file("const S: &str = \"a\u{a0}b\";"),
+        ),
+        ("a byte-order mark", "\u{feff}fn f() {}\n".to_string()),
+        (
+            "a form feed between items",
+            file("fn f() {}\u{c}\nfn g() {}"),
+        ),
+        (
+            "brackets nested as deep as the check reads",
+            file(&format!(
+                "const X: u8 = {}0{};",
+                "(".repeat(200),
+                ")".repeat(200)
+            )),
+        ),
+    ] {
+        assert_eq!(check(&text), vec![], "{what}:\n{text}");
+    }
 }
 
 #[test]

@@ -23,6 +23,7 @@
 //! [`isolation`] the parent side): a panic, an endless loop, a stack overflow, an abort, a
 //! runaway allocation or an early `exit` in student code costs that task and nothing else.
 
+pub mod build_view;
 pub mod calibration;
 pub mod call;
 pub mod case;

@@ -102,63 +102,6 @@ pub fn enter(policy: &Policy) -> Protections {
     }
 }
 
-/// A Landlock domain prepared by the grader for a process it starts, and entered by that
-/// process between `fork` and `exec` ([`FileScope::enter`]): the bounded build of a
-/// submission ([`super::student_build`]) may read the system, the toolchain and the sources,
-/// and write only its target folder (and the files named writable). No TCP either.
-pub struct FileScope {
-    #[cfg(target_os = "linux")]
-    ruleset: std::sync::Mutex<Option<::landlock::RulesetCreated>>,
-}
-
-impl FileScope {
-    /// Prepares the domain: `readable` folders (and their contents) may be read and
-    /// executed, `writable` ones also written, and the `writable_files` written. Paths
-    /// that do not exist are left out.
-    pub fn new(
-        readable: &[PathBuf],
-        writable: &[PathBuf],
-        writable_files: &[PathBuf],
-    ) -> anyhow::Result<Self> {
-        let existing = |paths: &[PathBuf]| -> Vec<PathBuf> {
-            paths.iter().filter(|p| p.exists()).cloned().collect()
-        };
-        #[cfg(target_os = "linux")]
-        {
-            let ruleset = landlock::prepare(
-                &existing(readable),
-                &existing(writable),
-                &existing(writable_files),
-            )?;
-            Ok(Self {
-                ruleset: std::sync::Mutex::new(Some(ruleset)),
-            })
-        }
-        #[cfg(not(target_os = "linux"))]
-        {
-            let _ = (
-                existing(readable),
-                existing(writable),
-                existing(writable_files),
-            );
-            Ok(Self {})
-        }
-    }
-
-    /// Puts the domain in force for the calling process and what it starts. Meant for the
-    /// child between `fork` and `exec` (`CommandExt::pre_exec`): it makes two system calls
-    /// and allocates nothing. A kernel without Landlock leaves the process as it was.
-    pub fn enter(&self) -> std::io::Result<()> {
-        #[cfg(target_os = "linux")]
-        if let Some(ruleset) = self.ruleset.lock().ok().and_then(|mut r| r.take()) {
-            ruleset
-                .restrict_self()
-                .map_err(|_| std::io::Error::other("landlock_restrict_self failed"))?;
-        }
-        Ok(())
-    }
-}
-
 fn describe(result: anyhow::Result<Option<String>>) -> String {
     match result {
         Ok(None) => IN_FORCE.into(),
@@ -201,34 +144,12 @@ mod landlock {
     use super::Policy;
     use anyhow::Context;
     use landlock::{
-        ABI, Access, AccessFs, AccessNet, Ruleset, RulesetAttr, RulesetCreated, RulesetCreatedAttr,
-        RulesetStatus, Scope, path_beneath_rules,
+        ABI, Access, AccessFs, AccessNet, Ruleset, RulesetAttr, RulesetCreatedAttr, RulesetStatus,
+        Scope, path_beneath_rules,
     };
 
     /// The newest Landlock ABI this code knows; older kernels enforce what they can.
     const ABI: ABI = ABI::V6;
-
-    /// The domain of a [`super::FileScope`], created and not yet in force.
-    pub(super) fn prepare(
-        readable: &[std::path::PathBuf],
-        writable: &[std::path::PathBuf],
-        writable_files: &[std::path::PathBuf],
-    ) -> anyhow::Result<RulesetCreated> {
-        Ok(Ruleset::default()
-            .handle_access(AccessFs::from_all(ABI))?
-            .handle_access(AccessNet::from_all(ABI))?
-            .create()?
-            .add_rules(path_beneath_rules(readable, AccessFs::from_read(ABI)))?
-            .add_rules(path_beneath_rules(writable, AccessFs::from_all(ABI)))?
-            .add_rules(path_beneath_rules(
-                writable_files,
-                AccessFs::ReadFile | AccessFs::WriteFile,
-            ))?
-            .add_rules(path_beneath_rules(
-                ["/dev/null"],
-                AccessFs::WriteFile | AccessFs::ReadFile,
-            ))?)
-    }
 
     pub(super) fn restrict(policy: &Policy) -> anyhow::Result<Option<String>> {
         let mut ruleset = Ruleset::default()
@@ -371,7 +292,7 @@ mod syscalls {
 
 #[cfg(all(test, target_os = "linux"))]
 mod tests {
-    use super::{FileScope, Protections, all_in_force};
+    use super::{Protections, all_in_force};
 
     #[test]
     fn the_words_a_report_stores_say_whether_every_protection_was_in_force() {
@@ -393,31 +314,5 @@ mod tests {
                 "{partial}"
             );
         }
-    }
-    use std::os::unix::process::CommandExt;
-    use std::path::PathBuf;
-    use std::process::Command;
-
-    #[test]
-    fn a_file_scope_lets_the_process_it_starts_write_only_where_it_may() {
-        let allowed = tempfile::tempdir().unwrap();
-        let denied = tempfile::tempdir().unwrap();
-        let system = ["/usr", "/bin", "/lib", "/lib64", "/etc"].map(PathBuf::from);
-        let scope = FileScope::new(&system, &[allowed.path().to_path_buf()], &[]).unwrap();
-        let mut shell = Command::new("/bin/sh");
-        shell.arg("-c").arg(format!(
-            "echo yes > '{}/file'; echo no > '{}/file'; cat /proc/self/status > '{}/read'",
-            allowed.path().display(),
-            denied.path().display(),
-            allowed.path().display(),
-        ));
-        // SAFETY: `enter` makes two system calls and allocates nothing.
-        unsafe { shell.pre_exec(move || scope.enter()) };
-        shell.status().expect("the shell runs");
-        assert!(allowed.path().join("file").exists(), "the writable folder");
-        assert!(!denied.path().join("file").exists(), "another folder");
-        // /proc is not among the readable folders here.
-        let read = std::fs::read_to_string(allowed.path().join("read")).unwrap_or_default();
-        assert!(read.is_empty(), "{read}");
     }
 }

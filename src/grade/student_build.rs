@@ -5,8 +5,14 @@
 //! copy is compiled then, so nothing refused stays reachable from the files that are. The tasks built from their stubs are recorded beside
 //! the binaries ([`BuildRecord`]); the grader reports each as a compile error with the
 //! compiler's message, and grades every other task as written.
+//!
+//! Every round compiles in the build's view ([`super::build_view`]): the student's crate
+//! sees the framework's sources and compiled units, the toolchain and its own files, and
+//! nothing else. Where the kernel allows no view (no user namespaces), a graded build
+//! (`bounded`) is refused, and a student's own build of a handout (which holds nothing but
+//! the student's files) runs as a plain cargo build.
 
-use super::sandbox::FileScope;
+use super::build_view::{Framework, Toolchain, View, ViewInputs};
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use serde::{Deserialize, Serialize};
@@ -78,6 +84,10 @@ pub struct StudentBuild<'a> {
     pub deadline: Duration,
     /// Build offline with the lock file as it is (an autograder: no network at grading).
     pub offline: bool,
+    /// The folder the binaries go to (a class run's or an autograder's scratch folder, so
+    /// that no other build replaces them while they grade); `None`: where cargo puts them,
+    /// beside `pbrlab`.
+    pub output: Option<&'a Path>,
     /// Compile under [`BOUNDS`]: the framework is built already (a class run's first
     /// build, an autograder's set-up), so what is left is the student's crate and a link,
     /// and a compile-time bomb in it costs this build, never the grader.
@@ -107,11 +117,10 @@ pub const BOUNDS: Bounds = Bounds {
     file_size: 1 << 30,
 };
 
-/// The system's folders a bounded build reads: programs, libraries, settings, and the
-/// kernel's views of the process (cargo counts CPUs there).
-const SYSTEM_FOLDERS: &[&str] = &[
-    "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/etc", "/proc", "/sys", "/dev",
-];
+/// The variable that turns the exercise check of `exercises/build.rs` off when it is `off`
+/// in the grader's environment: the tests that prove the build's view holds without it set
+/// it.
+pub const SOURCE_CHECK: &str = "PBRLAB_SOURCE_CHECK";
 
 /// What cargo builds: the worker binary of its package (`src/worker/`; with
 /// [`StudentBuild::commands`], `pbrlab-student` beside it), with the root package selected
@@ -146,8 +155,10 @@ struct Round {
     blamed: BTreeMap<TaskId, String>,
     /// Every error message, for a failure that names no exercise file.
     errors: Vec<String>,
-    /// The worker binary cargo produced.
+    /// The worker binary cargo produced (as the build names it).
     worker: Option<PathBuf>,
+    /// Every binary cargo produced (as the build names it).
+    binaries: Vec<PathBuf>,
 }
 
 impl StudentBuild<'_> {
@@ -240,36 +251,151 @@ impl StudentBuild<'_> {
         Ok(())
     }
 
-    /// The file system of a bounded build: it reads the system's programs and libraries,
-    /// the toolchain and the registry, the workspace's sources and the exercise files, and
-    /// writes only its target folder (its temporary files go there too) and cargo's
-    /// package-cache lock files.
-    fn file_scope(&self, stubs: &Path, cargo: &mut Command) -> anyhow::Result<FileScope> {
-        let env_or_home = |key: &str, dir: &str| {
-            std::env::var_os(key)
-                .map(PathBuf::from)
-                .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(dir)))
-        };
-        let target = std::env::var_os("CARGO_TARGET_DIR")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| self.root.join("target"));
-        let temporary = target.join("pbrlab-build-tmp");
-        std::fs::create_dir_all(&temporary)
-            .with_context(|| format!("creating {}", temporary.display()))?;
-        cargo.env("TMPDIR", &temporary);
-        let cargo_home = env_or_home("CARGO_HOME", ".cargo");
-        let mut readable: Vec<PathBuf> = SYSTEM_FOLDERS.iter().map(PathBuf::from).collect();
-        readable.extend([self.root.to_path_buf(), self.exercises.to_path_buf()]);
-        readable.push(stubs.to_path_buf());
-        readable.extend(cargo_home.clone());
-        readable.extend(env_or_home("RUSTUP_HOME", ".rustup"));
-        let locks: Vec<PathBuf> = cargo_home
-            .iter()
-            .flat_map(|home| {
-                [".package-cache", ".package-cache-mutate", ".global-cache"].map(|f| home.join(f))
-            })
+    /// Puts the binaries of a successful round where they are used: [`StudentBuild::output`],
+    /// or where cargo puts them outside the view (beside `pbrlab`); each replaced whole,
+    /// so that a worker running from the old file is not disturbed.
+    fn place_binaries(&self, round: &mut Round, view: Option<&View>) -> anyhow::Result<()> {
+        for binary in &mut round.binaries {
+            let built = view.map_or_else(|| binary.clone(), |v| v.on_host(binary));
+            let name = binary.file_name().context("a binary without a name")?;
+            let placed = self.output.map_or_else(|| binary.clone(), |o| o.join(name));
+            if placed == built {
+                continue;
+            }
+            let temporary = placed.with_file_name(format!(
+                ".{}.{}.new",
+                name.to_string_lossy(),
+                std::process::id()
+            ));
+            std::fs::copy(&built, &temporary)
+                .with_context(|| format!("copying {}", built.display()))?;
+            std::fs::rename(&temporary, &placed)
+                .with_context(|| format!("placing {}", placed.display()))?;
+            if round.worker.as_ref() == Some(binary) {
+                round.worker = Some(placed.clone());
+            }
+            *binary = placed;
+        }
+        Ok(())
+    }
+
+    /// Cargo's arguments for a build of the worker (and the student binary with
+    /// [`StudentBuild::commands`]), `offline` or not.
+    fn cargo_args(&self, offline: bool) -> Vec<String> {
+        let mut args: Vec<String> = ["build", "--release", "--message-format=json"]
+            .into_iter()
+            .chain(WORKER_SELECTION.iter().copied())
+            .map(String::from)
             .collect();
-        FileScope::new(&readable, &[target], &locks)
+        if self.commands {
+            args.extend(["--bin".into(), super::isolation::STUDENT_BINARY.into()]);
+        }
+        args.extend(self.feature_and_network_args(offline));
+        args
+    }
+
+    /// The arguments every build here shares: no default features for a build without
+    /// the reference, and no network when `offline`.
+    fn feature_and_network_args(&self, offline: bool) -> Vec<String> {
+        let mut args = Vec::new();
+        // A build without the reference in the instructor's repository (whose default
+        // features include it) must say so. The handout has no default features to turn
+        // off.
+        if self.handout && self.root.join("solutions").is_dir() {
+            args.push("--no-default-features".into());
+        }
+        if offline {
+            args.extend(["--offline".into(), "--locked".into()]);
+        }
+        args
+    }
+
+    /// Cargo's arguments for the framework's build ([`Framework::prepare`]): the libraries
+    /// the worker links, with the features the student's build resolves (the same packages
+    /// selected), and no binary.
+    fn framework_args(&self, offline: bool) -> Vec<String> {
+        let mut args: Vec<String> = [
+            "build",
+            "--release",
+            "--message-format=json",
+            "-p",
+            "pbrlab-cli",
+            "-p",
+            "pbrlab-worker",
+            "-p",
+            "pbrlab",
+            "-p",
+            "pbrlab-exercises",
+            "--lib",
+        ]
+        .map(String::from)
+        .into();
+        args.extend(self.feature_and_network_args(offline));
+        args
+    }
+
+    /// The shipped stubs, in the folder the framework's own build compiles
+    /// ([`Framework::prepare`]); a file is written only when it changed, so that cargo
+    /// finds that build current.
+    fn shipped_stubs(&self, target: &Path) -> anyhow::Result<PathBuf> {
+        let folder = target.join("pbrlab-view").join("stubs");
+        std::fs::create_dir_all(&folder).with_context(|| format!("making {}", folder.display()))?;
+        for task in TaskId::ALL {
+            let file = folder.join(format!("{}.rs", task.name()));
+            let text = (self.stub)(task)?;
+            if std::fs::read_to_string(&file).ok().as_deref() != Some(text.as_str()) {
+                std::fs::write(&file, text)
+                    .with_context(|| format!("writing {}", file.display()))?;
+            }
+        }
+        Ok(folder)
+    }
+
+    /// The toolchain and the framework a view needs, prepared once per process (a class
+    /// run builds many submissions on one framework); `None` where the kernel makes no
+    /// view and this build may run without one.
+    fn prepare_view(&self, target: &Path) -> anyhow::Result<Option<(Toolchain, Framework)>> {
+        type Prepared = (PathBuf, Vec<String>, Toolchain, Framework);
+        static PREPARED: std::sync::Mutex<Option<Prepared>> = std::sync::Mutex::new(None);
+        let args = self.framework_args(self.offline || self.bounded);
+        let mut prepared = PREPARED.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((root, cached, toolchain, framework)) = prepared.as_ref()
+            && root == self.root
+            && *cached == args
+        {
+            return Ok(Some((toolchain.clone(), framework.clone())));
+        }
+        let toolchain = Toolchain::resolve(self.root)?;
+        let stubs = self.shipped_stubs(target)?;
+        let framework = Framework::prepare(
+            self.root,
+            target,
+            &toolchain,
+            &args,
+            &stubs,
+            self.offline || self.bounded,
+        )?;
+        if let Err(why) = super::build_view::probe(&framework.helper, target) {
+            // A student's own build of a handout holds nothing but the student's files.
+            let handout = !self.root.join("solutions").exists();
+            if self.bounded || !handout {
+                return Err(why.context(
+                    "refusing to build student code without the build's view: it would read \
+                     the whole repository and every process's command line",
+                ));
+            }
+            if self.echo {
+                eprintln!("pbrlab: building without the build's view ({why:#})");
+            }
+            return Ok(None);
+        }
+        *prepared = Some((
+            self.root.to_path_buf(),
+            args,
+            toolchain.clone(),
+            framework.clone(),
+        ));
+        Ok(Some((toolchain, framework)))
     }
 
     /// Runs cargo once, reading its JSON messages; `left` of the build's `deadline`
@@ -281,57 +407,16 @@ impl StudentBuild<'_> {
         left: Duration,
         deadline: Duration,
     ) -> anyhow::Result<Round> {
-        let mut cargo = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-        cargo
-            .current_dir(self.root)
-            .args(["build", "--release", "--message-format=json"])
-            .args(WORKER_SELECTION)
-            .args(
-                self.commands
-                    .then_some(["--bin", super::isolation::STUDENT_BINARY])
-                    .into_iter()
-                    .flatten(),
-            )
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped());
-        // A build without the reference in the instructor's repository (whose default
-        // features include it) must say so. The handout has no default features to turn
-        // off.
-        if self.handout && self.root.join("solutions").is_dir() {
-            cargo.arg("--no-default-features");
-        }
-        if self.offline || self.bounded {
-            cargo.args(["--offline", "--locked"]);
-        }
-        // Its own process group, so that the whole tree (rustc, the linker) is killed
-        // with it and nothing outlives the build.
-        {
-            use std::os::unix::process::CommandExt;
-            cargo.process_group(0);
-            if self.bounded {
-                let scope = self.file_scope(stubs, &mut cargo)?;
-                // SAFETY: between fork and exec the closure only makes setrlimit, prctl and
-                // landlock_restrict_self calls, which are async-signal-safe, and allocates
-                // nothing (the Landlock domain was prepared before the fork).
-                unsafe {
-                    cargo.pre_exec(move || {
-                        use rlimit::Resource;
-                        Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
-                        Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
-                        Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
-                        Resource::CORE.set(0, 0)?;
-                        scope.enter()
-                    });
-                }
-            }
-        }
-        // The one folder the build script compiles. Unset, it compiles exercises/ as it is:
-        // plain cargo builds and this one then agree, and neither rebuilds after the other.
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| self.root.join("target"));
+        // The one folder the build script compiles.
         let compiled = if stubbed { stubs } else { self.exercises };
-        if same_path(compiled, &self.root.join("exercises")) {
-            cargo.env_remove("PBRLAB_EXERCISES");
-        } else {
-            cargo.env("PBRLAB_EXERCISES", compiled);
+        let mut env: Vec<(String, String)> = Vec::new();
+        // The switch that turns the exercise check off, for the tests that prove the view
+        // holds without it: the grader's to set, never the student's.
+        if let Ok(value) = std::env::var(SOURCE_CHECK) {
+            env.push((SOURCE_CHECK.into(), value));
         }
         // On a terminal, cargo's count of units built (its own progress line, which it
         // draws only on a terminal, asked for here and read back) drives a bar with the
@@ -339,13 +424,72 @@ impl StudentBuild<'_> {
         let bar =
             (self.echo && std::io::IsTerminal::is_terminal(&std::io::stderr())).then(build_bar);
         if bar.is_some() {
-            cargo
-                .env("CARGO_TERM_PROGRESS_WHEN", "always")
-                .env("CARGO_TERM_PROGRESS_WIDTH", "100");
+            env.push(("CARGO_TERM_PROGRESS_WHEN".into(), "always".into()));
+            env.push(("CARGO_TERM_PROGRESS_WIDTH".into(), "100".into()));
+        }
+        let view = match self.prepare_view(&target)? {
+            Some((toolchain, framework)) => {
+                env.push((
+                    "PBRLAB_EXERCISES".into(),
+                    compiled
+                        .to_str()
+                        .context("the exercise folder's path is not UTF-8")?
+                        .into(),
+                ));
+                Some(View::new(&ViewInputs {
+                    root: self.root,
+                    target: &target,
+                    toolchain: &toolchain,
+                    framework: &framework,
+                    exercises: compiled,
+                    cargo_args: &self.cargo_args(true),
+                    env: &env,
+                })?)
+            }
+            None => None,
+        };
+        let mut cargo = match &view {
+            Some(view) => view.command(),
+            None => {
+                let mut cargo =
+                    Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+                cargo
+                    .current_dir(self.root)
+                    .args(self.cargo_args(self.offline))
+                    .envs(env.iter().map(|(k, v)| (k, v)));
+                // Unset, it compiles exercises/ as it is: plain cargo builds and this one
+                // then agree, and neither rebuilds after the other.
+                if same_path(compiled, &self.root.join("exercises")) {
+                    cargo.env_remove("PBRLAB_EXERCISES");
+                } else {
+                    cargo.env("PBRLAB_EXERCISES", compiled);
+                }
+                cargo
+            }
+        };
+        cargo.stdout(Stdio::piped()).stderr(Stdio::piped());
+        // Its own process group, so that the whole tree (rustc, the linker) is killed
+        // with it and nothing outlives the build.
+        {
+            use std::os::unix::process::CommandExt;
+            cargo.process_group(0);
+            if self.bounded {
+                // SAFETY: between fork and exec the closure only makes setrlimit calls,
+                // which are async-signal-safe, and allocates nothing.
+                unsafe {
+                    cargo.pre_exec(move || {
+                        use rlimit::Resource;
+                        Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
+                        Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
+                        Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
+                        Resource::CORE.set(0, 0)
+                    });
+                }
+            }
         }
         let mut child = cargo
             .spawn()
-            .context("running cargo to build the exercises (is it on PATH?)")?;
+            .context("running cargo to build the exercises")?;
         let stderr = child.stderr.take().context("cargo's stderr")?;
         let echo = self.echo;
         let side = std::thread::spawn(move || {
@@ -387,6 +531,7 @@ impl StudentBuild<'_> {
                 blamed: BTreeMap::new(),
                 errors: Vec::new(),
                 worker: None,
+                binaries: Vec::new(),
             };
             let mut reader = BufReader::new(stdout);
             while let Some(line) = super::isolation::read_line(&mut reader) {
@@ -408,6 +553,12 @@ impl StudentBuild<'_> {
 
         round.success = round.success && status.success();
         let lines = side.join().unwrap_or_default();
+        if view.is_some() && View::failed(&status) {
+            bail!("the build's view could not be made:\n{}", lines.join("\n"));
+        }
+        if round.success {
+            self.place_binaries(&mut round, view.as_ref())?;
+        }
         // A compiler stopped by a bound: cargo names the signal that stopped it (SIGXCPU,
         // 24, for CPU time, SIGKILL after it) or the allocation that failed. (A constant
         // too large for the memory bound is a compile error of its file, charged to its
@@ -581,10 +732,13 @@ fn read_message(line: &str, exercises: &Path, echo: bool, round: &mut Round) {
                 add_message(round.blamed.entry(task).or_default(), &shown);
             }
         }
-        Some("compiler-artifact")
-            if value["target"]["name"].as_str() == Some(super::isolation::WORKER_BINARY) =>
-        {
-            round.worker = value["executable"].as_str().map(PathBuf::from);
+        Some("compiler-artifact") => {
+            if let Some(executable) = value["executable"].as_str().map(PathBuf::from) {
+                if value["target"]["name"].as_str() == Some(super::isolation::WORKER_BINARY) {
+                    round.worker = Some(executable.clone());
+                }
+                round.binaries.push(executable);
+            }
         }
         Some("build-finished") => round.success = value["success"].as_bool() == Some(true),
         _ => {}
@@ -627,6 +781,7 @@ mod tests {
             echo: false,
             deadline: Duration::from_secs(1),
             offline: true,
+            output: None,
             bounded: true,
         };
         let copy = stub_folder(&exercises);
@@ -676,6 +831,7 @@ mod tests {
             blamed: BTreeMap::new(),
             errors: Vec::new(),
             worker: None,
+            binaries: Vec::new(),
         };
         read_message(&line.to_string(), &exercises, false, &mut round);
         assert_eq!(

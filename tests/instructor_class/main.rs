@@ -1,5 +1,6 @@
-//! `pbrlab grade-class` in this repository: a regrade that lists what changed, and (slow)
-//! compile-time bombs stopped by the build's bounds.
+//! `pbrlab grade-class` in this repository: a regrade that lists what changed, compile-time
+//! attacks on what the build can read (`attacks.rs`), and (slow) compile-time bombs stopped
+//! by the build's bounds.
 //!
 //! A test binary of its own because a class run builds each submission's worker in the
 //! repository's own target folder, overwriting `target/release/pbrlab-worker` with that
@@ -7,6 +8,8 @@
 //! other test grades the shipped exercises with a worker that is a submission's. Not in the
 //! student handout (it grades with the reference).
 #![cfg(feature = "solutions")]
+
+mod attacks;
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -370,4 +373,150 @@ fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedba
         "{changes}"
     );
     assert_eq!(variant("bob"), bob);
+}
+
+/// Grades the attack catalogue (`attacks.rs`), the control and an honest student in one class
+/// run, with the exercise check on or off, and returns each student's result.
+fn grade_attacks(
+    check: bool,
+) -> (
+    Vec<attacks::Attack>,
+    std::collections::BTreeMap<String, Value>,
+) {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    let catalogue = attacks::catalogue(repository(), &submissions, &out);
+    let write = |student: &str, file: &str, text: &str| {
+        let folder = submissions.join(student);
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::write(folder.join(file), text).unwrap();
+    };
+    for attack in &catalogue {
+        write(&attack.student, "smith_g1.rs", &attack.file);
+    }
+    write("control", "smith_g1.rs", &attacks::control(repository()));
+    for task in ["reflect", "smith_g1"] {
+        let solution =
+            std::fs::read_to_string(repository().join(format!("solutions/{task}.rs"))).unwrap();
+        write("honest", &format!("{task}.rs"), &solution);
+    }
+    let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+        .arg("grade-class")
+        .arg(&submissions)
+        .arg("--out")
+        .arg(&out)
+        .args(["--hidden-seed", attacks::HIDDEN_SEED])
+        .env("PBRLAB_CANARY", attacks::CANARY)
+        .env("PBRLAB_SOURCE_CHECK", if check { "on" } else { "off" })
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    // No file the run wrote holds the secret.
+    for entry in walk(&out) {
+        let text = std::fs::read(&entry).unwrap();
+        assert!(
+            !text
+                .windows(attacks::CANARY.len())
+                .any(|w| w == attacks::CANARY.as_bytes()),
+            "{} holds the grader's secret",
+            entry.display()
+        );
+    }
+    let results = std::fs::read_dir(out.join("students"))
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().extension().is_some_and(|x| x == "json"))
+        .map(|e| {
+            let name = e.path().file_stem().unwrap().to_string_lossy().into_owned();
+            (name, read_json(&e.path()))
+        })
+        .collect();
+    (catalogue, results)
+}
+
+/// Every file below `dir`.
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            files.extend(walk(&path));
+        } else {
+            files.push(path);
+        }
+    }
+    files
+}
+
+/// The points `student` got on `task`, and the task's maximum.
+fn points(student: &Value, task: &str) -> (f64, f64) {
+    assert_eq!(
+        student["status"], "graded",
+        "{}: {}",
+        student["student"], student["message"]
+    );
+    let tasks = student["report"]["tasks"].as_array().unwrap();
+    let found = tasks.iter().find(|t| t["task"] == task).unwrap();
+    (
+        found["points"].as_f64().unwrap(),
+        found["max_points"].as_f64().unwrap(),
+    )
+}
+
+/// `task`'s status and its checks' summaries in `student`'s result (a failure message a
+/// person can read).
+fn summary(student: &Value, task: &str) -> String {
+    let tasks = student["report"]["tasks"].as_array().unwrap();
+    let found = tasks.iter().find(|t| t["task"] == task).unwrap();
+    let checks: Vec<String> = found["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| format!("{}: {}", c["name"], c["summary"]))
+        .collect();
+    format!("{} {}", found["status"], checks.join("; "))
+}
+
+/// Asserts what a class run of the attack catalogue must give: every attack 0 on its task and
+/// graded (never "not graded"), the honest student full marks, and the control full marks
+/// exactly when the exercise check is off.
+fn assert_attacks_fail(check: bool) {
+    let (catalogue, results) = grade_attacks(check);
+    for attack in &catalogue {
+        let student = &results[&attack.student];
+        assert_eq!(
+            points(student, "smith_g1").0,
+            0.0,
+            "an exercise file that {} scored (check {}): {}",
+            attack.what,
+            if check { "on" } else { "off" },
+            summary(student, "smith_g1")
+        );
+    }
+    let honest = &results["honest"];
+    for task in ["reflect", "smith_g1"] {
+        let (got, max) = points(honest, task);
+        assert_eq!(got, max, "{task}: {}", summary(honest, task));
+    }
+    let (got, max) = points(&results["control"], "smith_g1");
+    let expected = if check { 0.0 } else { max };
+    assert_eq!(
+        got, expected,
+        "the control reads its own file: full marks without the check, 0 with it"
+    );
+}
+
+/// The proof that the build's view, not the exercise check, is the boundary: with the
+/// check switched off, no attack reads anything worth reading.
+#[test]
+fn with_the_exercise_check_off_no_compile_time_attack_reads_anything_worth_reading() {
+    assert_attacks_fail(false);
+}
+
+/// The same catalogue with the check on (refused by it first).
+#[test]
+#[ignore = "slow: the attack catalogue once more, with the exercise check on"]
+fn with_the_exercise_check_on_every_compile_time_attack_scores_zero() {
+    assert_attacks_fail(true);
 }
