@@ -129,23 +129,41 @@ pub fn submissions(dir: &Path) -> anyhow::Result<Vec<(String, PathBuf)>> {
     Ok(found)
 }
 
-/// A student's name as a file name: anything but letters, digits, `-`, `_` and `.` becomes `_`.
+/// A student's name as a file name, one to one: a name of letters, digits, `-` and `_` is
+/// its own file name; any other has each other character as `_`, then `~` and a hash of the
+/// whole name (no plain name has a `~`), so that `eve x`, `eve_x` and `eve.json` each get
+/// files of their own, and no name reaches another's feedback (`<name>.txt`, `<name>/`).
 fn file_name(student: &str) -> String {
-    student
+    let plain = |c: char| c.is_alphanumeric() || c == '-' || c == '_';
+    if !student.is_empty() && student.chars().all(plain) {
+        return student.to_string();
+    }
+    let readable: String = student
         .chars()
-        .map(|c| {
-            if c.is_alphanumeric() || "-_.".contains(c) {
-                c
-            } else {
-                '_'
-            }
+        .map(|c| if plain(c) { c } else { '_' })
+        .collect();
+    let mut hasher = siphasher::sip::SipHasher24::new();
+    std::hash::Hasher::write(&mut hasher, student.as_bytes());
+    format!("{readable}~{:016x}", std::hash::Hasher::finish(&hasher))
+}
+
+/// True when `result` met a wall deadline: its build did not finish in time, or a task's
+/// worker was stopped at the task's time limit.
+fn ran_out_of_time(result: &StudentResult) -> bool {
+    let build = result.status == BUILD_ERROR && result.message.contains("did not finish within");
+    let task = result.report.as_ref().is_some_and(|report| {
+        report.tasks.iter().any(|t| {
+            matches!(&t.status, TaskStatus::Crashed { reason } if reason.starts_with("timed out"))
         })
-        .collect()
+    });
+    build || task
 }
 
 /// A submission built and ready to grade.
 struct Built {
     student: String,
+    /// Where the submission is (to build it again).
+    path: PathBuf,
     intake: Intake,
     scratch: tempfile::TempDir,
     compile_errors: BTreeMap<TaskId, String>,
@@ -163,6 +181,15 @@ impl ClassRun<'_> {
     /// summary. Returns the seconds per graded submission.
     pub fn run(&self) -> anyhow::Result<f64> {
         let all = submissions(self.submissions)?;
+        for (student, _) in &all {
+            let file = file_name(student);
+            if file != *student {
+                eprintln!(
+                    "{student:?}: results in students/{file}.json (the name has characters a \
+                     file name does not keep)"
+                );
+            }
+        }
         std::fs::create_dir_all(self.out.join("students"))
             .with_context(|| format!("making {}", self.out.display()))?;
         // A result that is not a grade (the grading machinery failed) is tried again.
@@ -222,6 +249,7 @@ impl ClassRun<'_> {
         let changes = std::sync::Mutex::new(Vec::<StudentChange>::new());
         let history = self.history_folder();
         let record = |result: &StudentResult| self.record(result, &history, &failures, &changes);
+        let contended = std::sync::Mutex::new(Vec::<(String, PathBuf)>::new());
         std::thread::scope(|scope| {
             for _ in 0..self.parallel.max(1) {
                 scope.spawn(|| {
@@ -229,7 +257,14 @@ impl ClassRun<'_> {
                         let next = rx.lock().ok().and_then(|rx| rx.recv().ok());
                         let Some(built) = next else { break };
                         let student = built.student.clone();
+                        let path = built.path.clone();
                         let result = self.grade_built(built);
+                        if ran_out_of_time(&result) {
+                            if let Ok(mut contended) = contended.lock() {
+                                contended.push((student, path));
+                            }
+                            continue;
+                        }
                         record(&result);
                         bar.set_message(student);
                         bar.inc(1);
@@ -243,6 +278,11 @@ impl ClassRun<'_> {
                             break;
                         }
                     }
+                    Err(result) if ran_out_of_time(&result) => {
+                        if let Ok(mut contended) = contended.lock() {
+                            contended.push((student.clone(), path.clone()));
+                        }
+                    }
                     Err(result) => {
                         record(&result);
                         bar.inc(1);
@@ -251,6 +291,24 @@ impl ClassRun<'_> {
             }
             drop(tx);
         });
+        // A wall deadline met while other submissions ran may be another student's doing
+        // (a CPU hog): each such submission is graded again with nothing else running,
+        // and only that grade counts.
+        let contended = contended.into_inner().unwrap_or_default();
+        if !contended.is_empty() {
+            eprintln!(
+                "{} submission(s) ran out of time while others ran: graded again alone",
+                contended.len()
+            );
+        }
+        for (student, path) in &contended {
+            let result = match self.build(student, path, &stub) {
+                Ok(built) => self.grade_built(built),
+                Err(result) => *result,
+            };
+            record(&result);
+            bar.inc(1);
+        }
         bar.finish_and_clear();
         let per_submission = start.elapsed().as_secs_f64() / todo.len().max(1) as f64;
         let failures = failures.into_inner().unwrap_or_default();
@@ -449,6 +507,7 @@ impl ClassRun<'_> {
         match prepared {
             Ok((scratch, compile_errors)) => Ok(Built {
                 student: student.to_string(),
+                path: path.to_path_buf(),
                 intake,
                 scratch,
                 compile_errors,
@@ -722,7 +781,20 @@ mod tests {
         assert_eq!(names, ["alice", "bob"]);
         std::fs::create_dir(dir.path().join("alice")).unwrap();
         assert!(submissions(dir.path()).is_err(), "alice twice");
-        assert_eq!(file_name("a/b c"), "a_b_c");
+        assert_eq!(file_name("ada_lovelace-2"), "ada_lovelace-2");
+        let names = [
+            "eve x", "eve_x", "eve/x", "eve.x", "eve.json", "eve", "=cmd",
+        ];
+        let files: std::collections::BTreeSet<_> = names.iter().map(|n| file_name(n)).collect();
+        assert_eq!(files.len(), names.len(), "one file per name: {files:?}");
+        for file in &files {
+            assert!(
+                file.chars()
+                    .all(|c| c.is_alphanumeric() || "-_~".contains(c)),
+                "{file}"
+            );
+        }
+        assert!(file_name("eve x").starts_with("eve_x~"));
     }
 
     #[test]

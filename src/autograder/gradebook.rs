@@ -142,14 +142,48 @@ fn possible(results: &[StudentResult], entry: &str) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The CSV of `rows` (a header first), quoted as RFC 4180 has it: every file a class run
-/// writes for other programs goes through here.
+/// The CSV of `rows` (a header first), quoted as RFC 4180 has it, every cell neutralised
+/// against formula injection ([`neutral`]): every file a class run writes for other
+/// programs goes through here.
 pub(crate) fn write(rows: Vec<Vec<String>>) -> anyhow::Result<String> {
     let mut out = csv::Writer::from_writer(Vec::new());
     for row in rows {
-        out.write_record(&row)?;
+        out.write_record(row.iter().map(|cell| neutral(cell).into_owned()))?;
     }
     Ok(String::from_utf8(out.into_inner()?)?)
+}
+
+/// `cell` as a spreadsheet reads it as text: OWASP's rule against CSV injection, a cell
+/// that starts with `=`, `+`, `-`, `@`, a tab or a carriage return gets a `'` in front,
+/// unless it is a plain number (`-0.5`, points). Student names and class-list cells are
+/// anyone's to choose.
+fn neutral(cell: &str) -> std::borrow::Cow<'_, str> {
+    let risky = cell.starts_with(['=', '+', '-', '@', '\t', '\r']);
+    if risky && !plain_number(cell) {
+        format!("'{cell}").into()
+    } else {
+        cell.into()
+    }
+}
+
+/// A decimal number: a sign, digits, a fraction, an exponent (`-1.5e3`); nothing a
+/// spreadsheet could read as a name or a formula (`-inf`, `+A1`).
+fn plain_number(cell: &str) -> bool {
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let unsigned = cell.strip_prefix(['+', '-']).unwrap_or(cell);
+    let (mantissa, exponent) = match unsigned.split_once(['e', 'E']) {
+        Some((m, e)) => (m, Some(e.strip_prefix(['+', '-']).unwrap_or(e))),
+        None => (unsigned, None),
+    };
+    let mantissa_ok = match mantissa.split_once('.') {
+        Some((whole, fraction)) => {
+            (digits(whole) || whole.is_empty())
+                && (digits(fraction) || fraction.is_empty())
+                && !(whole.is_empty() && fraction.is_empty())
+        }
+        None => digits(mantissa),
+    };
+    mantissa_ok && exponent.is_none_or(digits)
 }
 
 fn cell(points: Option<f64>) -> String {
@@ -330,6 +364,44 @@ mod tests {
         assert_eq!(rows[1], ["ann", "ann@example.edu", "50", "50"]);
         assert_eq!(rows[2], ["bo", "", "0", "0"]);
         assert_eq!(rows[3], ["cy", "", "", ""]);
+    }
+
+    #[test]
+    fn cells_that_a_spreadsheet_would_run_are_written_as_text() {
+        let hostile = [
+            "=HYPERLINK(\"http://x\",\"y\")",
+            "+1+cmd|' /C calc'!A0",
+            "-2+3",
+            "@SUM(A1:A9)",
+            "\tx",
+            "\r=1",
+            "-inf",
+        ];
+        let plain = ["ada", "-2", "+1.5", "3.25e-2", "", "a=b"];
+        let row: Vec<String> = hostile
+            .iter()
+            .chain(&plain)
+            .map(|s| s.to_string())
+            .collect();
+        let text = write(vec![row.clone()]).unwrap();
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .from_reader(text.as_bytes());
+        let back: Vec<String> = reader
+            .records()
+            .next()
+            .unwrap()
+            .unwrap()
+            .iter()
+            .map(String::from)
+            .collect();
+        for (cell, original) in back.iter().zip(&row) {
+            if hostile.contains(&original.as_str()) {
+                assert_eq!(*cell, format!("'{original}"), "{original:?}");
+            } else {
+                assert_eq!(cell, original);
+            }
+        }
     }
 
     #[test]

@@ -34,8 +34,11 @@ pub struct PackageArgs {
     /// The new (or empty) folder to write the package into.
     pub out: PathBuf,
     /// The seed of the hidden cases (default: drawn at random and kept in the package).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "hidden_seed_file")]
     pub hidden_seed: Option<u64>,
+    /// A file holding the hidden seed.
+    #[arg(long)]
+    pub hidden_seed_file: Option<PathBuf>,
     /// How much of a failing case a student sees: full, actual (input and their output,
     /// never the expected answer) or none (which checks failed). Kept in the package's
     /// settings (`feedback`).
@@ -44,8 +47,11 @@ pub struct PackageArgs {
     /// A course secret for per-student variants: each student's hidden cases and seeds
     /// come from it and their id (Gradescope's user id, PrairieLearn's variant seed), in
     /// place of the hidden seed. Kept in the package's settings (`variant_key`).
-    #[arg(long, conflicts_with = "hidden_seed")]
+    #[arg(long, conflicts_with_all = ["hidden_seed", "hidden_seed_file", "variant_key_file"])]
     pub variant_key: Option<String>,
+    /// A file holding the course secret of --variant-key.
+    #[arg(long, conflicts_with_all = ["hidden_seed", "hidden_seed_file"])]
+    pub variant_key_file: Option<PathBuf>,
 }
 
 /// Arguments of `pbrlab autograder run`.
@@ -104,10 +110,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 }
 
 fn write(root: &std::path::Path, p: PackageArgs, service: Service) -> anyhow::Result<()> {
+    let hidden_seed =
+        super::secret::seed("hidden-seed", p.hidden_seed, p.hidden_seed_file.as_deref())?;
     let config = Config {
         feedback: p.feedback,
-        variant_key: p.variant_key,
-        ..Config::new(p.hidden_seed.unwrap_or_else(crate::entropy::random_u64))
+        variant_key: super::secret::key(
+            "variant-key",
+            p.variant_key,
+            p.variant_key_file.as_deref(),
+        )?,
+        ..Config::new(hidden_seed.unwrap_or_else(crate::entropy::random_u64))
     };
     let files = package::write(root, &p.out, service, &config)
         .with_context(|| format!("writing the package into {}", p.out.display()))?;

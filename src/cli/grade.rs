@@ -15,6 +15,7 @@ use std::time::Duration;
 
 /// Arguments of `pbrlab grade`.
 #[derive(clap::Args, Debug)]
+#[command(group(clap::ArgGroup::new("variant").args(["variant_key", "variant_key_file"])))]
 pub struct Args {
     /// Tasks to grade (ids or unique prefixes). Default: every task.
     pub tasks: Vec<String>,
@@ -33,9 +34,13 @@ pub struct Args {
     /// Seed of the statistical checks.
     #[arg(long, default_value_t = DEFAULT_SEED)]
     pub seed: u64,
-    /// Add random hidden cases drawn with this seed, compared live against the reference.
-    #[arg(long)]
+    /// Add random hidden cases drawn with this seed, compared live against the reference
+    /// (readable by every local user while the run lasts: prefer --hidden-seed-file).
+    #[arg(long, conflicts_with = "hidden_seed_file")]
     pub hidden_seed: Option<u64>,
+    /// A file holding the hidden seed.
+    #[arg(long)]
+    pub hidden_seed_file: Option<PathBuf>,
     /// Time limit per task, in seconds.
     #[arg(long, default_value_t = 30.0)]
     pub timeout: f64,
@@ -68,12 +73,16 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "full")]
     pub feedback: Feedback,
     /// Grade one student's variant: their own hidden cases and seeds, drawn from this
-    /// course secret and `--student` (as `grade-class --variant-key` does).
-    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "seed", "repeat"])]
+    /// course secret and `--student` (as `grade-class --variant-key` does). Readable by
+    /// every local user while the run lasts: prefer --variant-key-file.
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat"])]
     pub variant_key: Option<String>,
+    /// A file holding the course secret of --variant-key.
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat", "variant_key"])]
+    pub variant_key_file: Option<PathBuf>,
     /// The student whose variant `--variant-key` grades (the submission's name in a
     /// class run).
-    #[arg(long, requires = "variant_key")]
+    #[arg(long, requires = "variant")]
     pub student: Option<String>,
 }
 
@@ -94,8 +103,17 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !(args.timeout > 0.0 && args.timeout.is_finite()) {
         return Err(anyhow!("--timeout must be a positive number of seconds"));
     }
-    let variant = args
-        .variant_key
+    let key = super::secret::key(
+        "variant-key",
+        args.variant_key.clone(),
+        args.variant_key_file.as_deref(),
+    )?;
+    let hidden_seed = super::secret::seed(
+        "hidden-seed",
+        args.hidden_seed,
+        args.hidden_seed_file.as_deref(),
+    )?;
+    let variant = key
         .as_deref()
         .zip(args.student.as_deref())
         .map(|(key, student)| Variant::of(key, student));
@@ -103,7 +121,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         tasks,
         implementation: args.implementation,
         seed: variant.as_ref().map_or(args.seed, |v| v.seed),
-        hidden_seed: variant.as_ref().map(|v| v.hidden_seed).or(args.hidden_seed),
+        hidden_seed: variant.as_ref().map(|v| v.hidden_seed).or(hidden_seed),
         timeout: Duration::from_secs_f64(args.timeout),
         memory_limit: args.memory_limit_mb << 20,
         renders: !args.no_renders,

@@ -15,9 +15,13 @@ pub struct Args {
     /// stopped continues where it stopped.
     #[arg(long)]
     pub out: PathBuf,
-    /// Add hidden random cases drawn with this seed.
-    #[arg(long)]
+    /// Add hidden random cases drawn with this seed (readable by every local user while
+    /// the run lasts: prefer --hidden-seed-file).
+    #[arg(long, conflicts_with = "hidden_seed_file")]
     pub hidden_seed: Option<u64>,
+    /// A file holding the hidden seed.
+    #[arg(long)]
+    pub hidden_seed_file: Option<PathBuf>,
     /// Students graded at once (default: the number of cores).
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -44,9 +48,13 @@ pub struct Args {
     pub feedback: Feedback,
     /// A course secret for per-student variants: each student's hidden cases and seeds
     /// come from it and the submission's name, and each report records the variant, so a
-    /// regrade with the same key reproduces it. Replaces --hidden-seed.
-    #[arg(long, conflicts_with = "hidden_seed")]
+    /// regrade with the same key reproduces it. Replaces --hidden-seed. (Readable by every
+    /// local user while the run lasts: prefer --variant-key-file.)
+    #[arg(long, conflicts_with_all = ["hidden_seed", "hidden_seed_file", "variant_key_file"])]
     pub variant_key: Option<String>,
+    /// A file holding the course secret of --variant-key.
+    #[arg(long, conflicts_with_all = ["hidden_seed", "hidden_seed_file"])]
+    pub variant_key_file: Option<PathBuf>,
     /// A class list (CSV with a header, e.g. Canvas's gradebook export) that maps
     /// submission names to the students of canvas.csv and moodle.csv: a submission matches
     /// the row whose SIS Login ID, SIS User ID, Username, Login, Email address, Email, ID
@@ -68,7 +76,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         root: crate::repository_root(),
         submissions: &args.submissions,
         out: &args.out,
-        hidden_seed: args.hidden_seed,
+        hidden_seed: super::secret::seed(
+            "hidden-seed",
+            args.hidden_seed,
+            args.hidden_seed_file.as_deref(),
+        )?,
         parallel,
         task_timeout: Duration::from_secs_f64(args.timeout),
         memory_limit: args.memory_limit_mb << 20,
@@ -76,7 +88,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         progress: true,
         regrade: args.regrade,
         feedback: args.feedback,
-        variant_key: args.variant_key,
+        variant_key: super::secret::key(
+            "variant-key",
+            args.variant_key,
+            args.variant_key_file.as_deref(),
+        )?,
         roster: args.roster,
     }
     .run()?;

@@ -15,6 +15,7 @@ mod power;
 pub mod rebuild;
 mod render;
 mod reset;
+mod secret;
 mod similarity;
 mod stability;
 pub mod student_side;

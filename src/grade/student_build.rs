@@ -200,12 +200,27 @@ impl StudentBuild<'_> {
                 .into_iter()
                 .filter(|(task, _)| !errors.contains_key(task))
                 .collect();
-            if new.is_empty() {
-                bail!(
-                    "the build failed outside the exercise files:\n{}",
+            let new = if new.is_empty() {
+                // Nothing named an exercise file: the file whose stub lets the build
+                // succeed is the cause (a renamed task function, a limit reached).
+                let culprits = self.culprits(&stubs, &errors, start, deadline)?;
+                if culprits.is_empty() {
+                    bail!(
+                        "the build failed outside the exercise files, with every task file \
+                         of the submission replaced by its stub too:\n{}",
+                        round.errors.join("\n")
+                    );
+                }
+                let message = format!(
+                    "the build failed outside the exercise files with this file compiled \
+                     in, and succeeded with its stub in its place (a task function renamed? \
+                     its signature is in the stub):\n{}",
                     round.errors.join("\n")
                 );
-            }
+                culprits.into_iter().map(|t| (t, message.clone())).collect()
+            } else {
+                new
+            };
             if self.echo {
                 let names: Vec<_> = new
                     .iter()
@@ -219,6 +234,41 @@ impl StudentBuild<'_> {
             }
             errors.extend(new);
         }
+    }
+
+    /// The submission's task files whose stubs make a failing build succeed: each alone,
+    /// in task order, then all together; none when even that fails (the fault is not the
+    /// submission's). `errors` are the tasks stubbed already.
+    fn culprits(
+        &self,
+        stubs: &Path,
+        errors: &BTreeMap<TaskId, String>,
+        start: Instant,
+        deadline: Duration,
+    ) -> anyhow::Result<Vec<TaskId>> {
+        let mut candidates = Vec::new();
+        for task in TaskId::ALL {
+            let file = self.exercises.join(format!("{}.rs", task.name()));
+            let written = std::fs::read_to_string(&file)
+                .is_ok_and(|text| (self.stub)(task).is_ok_and(|stub| stub != text));
+            if written && !errors.contains_key(&task) {
+                candidates.push(task);
+            }
+        }
+        let trials = candidates
+            .iter()
+            .map(|&task| vec![task])
+            .chain((candidates.len() > 1).then(|| candidates.clone()));
+        for trial in trials {
+            let mut stubbed = errors.clone();
+            stubbed.extend(trial.iter().map(|&t| (t, String::new())));
+            self.place_stubs(stubs, &stubbed)?;
+            let left = deadline.saturating_sub(start.elapsed());
+            if self.cargo(stubs, true, left, deadline)?.success {
+                return Ok(trial);
+            }
+        }
+        Ok(Vec::new())
     }
 
     /// Makes `folder` a copy of the exercise files with the shipped stub in place of each
@@ -699,6 +749,10 @@ fn files_of(message: &serde_json::Value, into: &mut Vec<String>) {
     }
 }
 
+/// What a compiler message that quotes another file than the student's says instead.
+const FOREIGN: &str = "  (the compiler's message quotes a file other than your exercise files, so it is \
+                       not shown: the build reached outside them)";
+
 /// Reads one line of cargo's JSON output into `round`.
 fn read_message(line: &str, exercises: &Path, echo: bool, round: &mut Round) {
     let Ok(value) = serde_json::from_str::<serde_json::Value>(line) else {
@@ -708,24 +762,32 @@ fn read_message(line: &str, exercises: &Path, echo: bool, round: &mut Round) {
         Some("compiler-message") => {
             let message = &value["message"];
             let rendered = message["rendered"].as_str().unwrap_or_default();
-            let shown = rendered.replace(&format!("{}/", exercises.display()), "exercises/");
+            let mut files = Vec::new();
+            files_of(message, &mut files);
+            // A message that quotes a file other than the student's own shows its first
+            // line only: what the build reached outside the exercise files is not shown.
+            let foreign = files.iter().any(|f| task_of(f, exercises).is_none());
+            let headline = rendered.lines().next().unwrap_or_default();
+            let shown = if foreign {
+                format!("{headline}\n{FOREIGN}\n")
+            } else {
+                rendered.replace(&format!("{}/", exercises.display()), "exercises/")
+            };
             if echo {
                 eprint!("{shown}");
             }
             if message["level"].as_str() != Some("error") {
                 return;
             }
-            round.errors.push(shown.clone());
-            let mut files = Vec::new();
-            files_of(message, &mut files);
+            round.errors.push(headline.to_string());
             let mut tasks: Vec<_> = files.iter().filter_map(|f| task_of(f, exercises)).collect();
-            // A function whose signature is not the task's is found where `lib.rs` builds
-            // the task table; the message names the function's type, `{reflect::reflect}`.
-            tasks.extend(
-                TaskId::ALL
-                    .into_iter()
-                    .filter(|t| rendered.contains(&format!("{{{}::", t.name()))),
-            );
+            // A task function renamed, or with a signature that is not the task's, is found
+            // where `lib.rs` builds the task table; the message names the task's module
+            // (`crate::reflect`) or the function's type (`{reflect::reflect}`).
+            tasks.extend(TaskId::ALL.into_iter().filter(|t| {
+                rendered.contains(&format!("{{{}::", t.name()))
+                    || rendered.contains(&format!("`crate::{}`", t.name()))
+            }));
             tasks.sort();
             tasks.dedup();
             for task in tasks {
@@ -853,8 +915,40 @@ mod tests {
             "a signature that is not the task's is charged to the task"
         );
         assert!(
-            round.blamed[&TaskId::Mis].contains("--> exercises/mis.rs:3:5"),
-            "the message names the file as the student knows it: {:?}",
+            round.blamed[&TaskId::Mis].starts_with("error: expected `;`")
+                && round.blamed[&TaskId::Mis].contains(FOREIGN)
+                && !round.blamed[&TaskId::Mis].contains("-->"),
+            "a message that quotes another file shows its first line only: {:?}",
+            round.blamed
+        );
+        let renamed = serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "rendered": "error[E0425]: cannot find value `smith_g1` in module `crate::smith_g1`\n --> exercises/lib.rs:40:40\n   | pub static TASKS",
+                "spans": [{"file_name": "exercises/lib.rs"}],
+            }
+        });
+        read_message(&renamed.to_string(), &exercises, false, &mut round);
+        assert!(
+            round.blamed.contains_key(&TaskId::SmithG1),
+            "a renamed task function is charged to its task: {:?}",
+            round.blamed
+        );
+        assert!(!round.blamed[&TaskId::SmithG1].contains("pub static TASKS"));
+        let own = serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "rendered": format!("error: expected `;`\n --> {}:7:1\n", exercises.join("phong.rs").display()),
+                "spans": [{"file_name": exercises.join("phong.rs").display().to_string()}],
+            }
+        });
+        read_message(&own.to_string(), &exercises, false, &mut round);
+        assert!(
+            round.blamed[&TaskId::Phong].contains("--> exercises/phong.rs:7:1"),
+            "a message on the student's own file is shown whole, naming the file as the \
+             student knows it: {:?}",
             round.blamed
         );
     }

@@ -228,11 +228,14 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     let wrong = right.replace("2.0 * c / (c + root)", "2.0 * c / (c + root + 0.01)");
     assert_ne!(wrong, right);
     std::fs::write(bob.join("smith_g1.rs"), &wrong).unwrap();
+    // The seed from a file, as the README has it (a command line is every user's to read).
+    let seed = dir.path().join("seed");
+    std::fs::write(&seed, "7\n").unwrap();
     let grade_class = |regrade: bool| {
         grade_class(
             &submissions,
             &out,
-            &["--hidden-seed".as_ref(), "7".as_ref()],
+            &["--hidden-seed-file".as_ref(), seed.as_os_str()],
             regrade,
         );
         std::fs::read_to_string(out.join("changes.md")).unwrap_or_default()
@@ -395,11 +398,20 @@ fn grade_attacks(
         write(&attack.student, "smith_g1.rs", &attack.file);
     }
     write("control", "smith_g1.rs", &attacks::control(repository()));
+    let solution = |task: &str| {
+        std::fs::read_to_string(repository().join(format!("solutions/{task}.rs"))).unwrap()
+    };
     for task in ["reflect", "smith_g1"] {
-        let solution =
-            std::fs::read_to_string(repository().join(format!("solutions/{task}.rs"))).unwrap();
-        write("honest", &format!("{task}.rs"), &solution);
+        write("honest", &format!("{task}.rs"), &solution(task));
     }
+    // Names that collide as file names, or that a spreadsheet would run as formulas.
+    for student in HOSTILE_NAMES {
+        write(student, "reflect.rs", &solution("reflect"));
+    }
+    // An honest slip whose error is in the framework's task table, not in the file.
+    write("renamed", "reflect.rs", &solution("reflect"));
+    let renamed = solution("smith_g1").replace("pub fn smith_g1(", "pub fn g1_ggx(");
+    write("renamed", "smith_g1.rs", &renamed);
     let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
         .arg("grade-class")
         .arg(&submissions)
@@ -412,6 +424,21 @@ fn grade_attacks(
         .unwrap();
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(output.status.success(), "{stderr}");
+    // Every name has a result of its own, and class.csv read back shows each name as text.
+    let table = std::fs::read_to_string(out.join("class.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let names: Vec<String> = reader
+        .records()
+        .map(|r| r.unwrap().get(0).unwrap().to_string())
+        .collect();
+    for student in HOSTILE_NAMES {
+        let shown = if student.starts_with(['=', '+', '-', '@']) {
+            format!("'{student}")
+        } else {
+            student.to_string()
+        };
+        assert!(names.contains(&shown), "{shown:?} in {names:?}");
+    }
     // No file the run wrote holds the secret.
     for entry in walk(&out) {
         let text = std::fs::read(&entry).unwrap();
@@ -434,6 +461,16 @@ fn grade_attacks(
         .collect();
     (catalogue, results)
 }
+
+/// Submission names that map to one file name if taken as they are, or that a spreadsheet
+/// would run as formulas.
+const HOSTILE_NAMES: &[&str] = &[
+    "eve x",
+    "eve_x",
+    "eve.json",
+    "=HYPERLINK(\"x\")",
+    "@SUM(A1)",
+];
 
 /// Every file below `dir`.
 fn walk(dir: &Path) -> Vec<PathBuf> {
@@ -479,8 +516,9 @@ fn summary(student: &Value, task: &str) -> String {
 }
 
 /// Asserts what a class run of the attack catalogue must give: every attack 0 on its task and
-/// graded (never "not graded"), the honest student full marks, and the control full marks
-/// exactly when the exercise check is off.
+/// graded (never "not graded"), the honest student full marks, a student who renamed a task
+/// function 0 on that task only, and the control full marks exactly when the exercise check
+/// is off.
 fn assert_attacks_fail(check: bool) {
     let (catalogue, results) = grade_attacks(check);
     for attack in &catalogue {
@@ -494,11 +532,25 @@ fn assert_attacks_fail(check: bool) {
             summary(student, "smith_g1")
         );
     }
+    // Each name graded as itself, into a file of its own.
+    for student in HOSTILE_NAMES {
+        let result = results
+            .values()
+            .find(|r| r["student"] == *student)
+            .unwrap_or_else(|| panic!("no result for {student:?}"));
+        let (got, max) = points(result, "reflect");
+        assert_eq!(got, max, "{student:?}: {}", summary(result, "reflect"));
+    }
     let honest = &results["honest"];
     for task in ["reflect", "smith_g1"] {
         let (got, max) = points(honest, task);
         assert_eq!(got, max, "{task}: {}", summary(honest, task));
     }
+    // A renamed task function costs its task, not the submission.
+    let renamed = &results["renamed"];
+    assert_eq!(points(renamed, "smith_g1").0, 0.0);
+    let (got, max) = points(renamed, "reflect");
+    assert_eq!(got, max, "{}", summary(renamed, "reflect"));
     let (got, max) = points(&results["control"], "smith_g1");
     let expected = if check { 0.0 } else { max };
     assert_eq!(
@@ -519,4 +571,87 @@ fn with_the_exercise_check_off_no_compile_time_attack_reads_anything_worth_readi
 #[ignore = "slow: the attack catalogue once more, with the exercise check on"]
 fn with_the_exercise_check_on_every_compile_time_attack_scores_zero() {
     assert_attacks_fail(true);
+}
+
+/// Two students whose `reflect`, `cosine_sample` and `smith_g1` each start 32 threads
+/// that spin and spin themselves until the task's time limit, graded first, beside three
+/// honest students: the honest students keep full marks (a submission that ran out of time
+/// while others ran is graded again alone), and the hogs lose those tasks only.
+#[test]
+#[ignore = "slow: two CPU hogs beside three honest students (about a minute)"]
+fn a_cpu_hog_costs_no_other_student_a_point() {
+    let dir = tempfile::tempdir().unwrap();
+    let (submissions, out) = (dir.path().join("submissions"), dir.path().join("out"));
+    let solution = |task: &str| {
+        std::fs::read_to_string(repository().join(format!("solutions/{task}.rs"))).unwrap()
+    };
+    let tasks = [
+        "reflect",
+        "smith_g1",
+        "cosine_sample",
+        "path_trace",
+        "delta_tracking",
+    ];
+    let hogs = ["aa_hog", "ab_hog"];
+    let spin = "    for _ in 0..32 { std::thread::spawn(|| loop { std::hint::black_box(0u64); }); }\n    \
+                loop { std::hint::black_box(0u64); }\n";
+    let hogging = [
+        (
+            "reflect",
+            format!(
+                "use crate::prelude::*;\npub fn reflect(wo: Vec3, n: Vec3) -> Vec3 {{\n    let _ = (wo, n);\n{spin}}}\n"
+            ),
+        ),
+        (
+            "smith_g1",
+            format!(
+                "use crate::prelude::*;\npub fn smith_g1(w: Vec3, alpha: f32) -> f32 {{\n    let _ = (w, alpha);\n{spin}}}\n"
+            ),
+        ),
+        (
+            "cosine_sample",
+            format!(
+                "use crate::prelude::*;\npub fn cosine_sample(u: Vec2) -> Vec3 {{\n    let _ = u;\n{spin}}}\n\
+                 pub fn cosine_pdf(w: Vec3) -> f32 {{\n    let _ = w;\n{spin}}}\n"
+            ),
+        ),
+    ];
+    for student in ["ada", "bob", "cy"].into_iter().chain(hogs) {
+        let folder = submissions.join(student);
+        std::fs::create_dir_all(&folder).unwrap();
+        for task in tasks {
+            std::fs::write(folder.join(format!("{task}.rs")), solution(task)).unwrap();
+        }
+        if hogs.contains(&student) {
+            for (task, text) in &hogging {
+                std::fs::write(folder.join(format!("{task}.rs")), text).unwrap();
+            }
+        }
+    }
+    grade_class(
+        &submissions,
+        &out,
+        &[
+            "--timeout".as_ref(),
+            "3".as_ref(),
+            "--jobs".as_ref(),
+            "2".as_ref(),
+        ],
+        false,
+    );
+    for student in ["ada", "bob", "cy"] {
+        let result = read_json(&out.join(format!("students/{student}.json")));
+        for task in tasks {
+            let (got, max) = points(&result, task);
+            assert_eq!(got, max, "{student} {task}: {}", summary(&result, task));
+        }
+    }
+    for hog in hogs {
+        let result = read_json(&out.join(format!("students/{hog}.json")));
+        for (task, _) in &hogging {
+            assert_eq!(points(&result, task).0, 0.0, "{hog} {task}");
+        }
+        let (got, max) = points(&result, "path_trace");
+        assert_eq!(got, max, "{}", summary(&result, "path_trace"));
+    }
 }
