@@ -386,6 +386,53 @@ fn both_packages_grade_real_submissions_end_to_end() {
             _ => unreachable!(),
         }
     }
+    // With the exercise check switched off, the build's view alone stops a macro-assembled
+    // `include!` of the package's reference: that task scores 0, every other full marks.
+    let stealer = dir.path().join("autograder").join("stealer");
+    let reference = gs.join("pbrlab/solutions/smith_g1.rs");
+    let mut files: Vec<(String, String)> = TaskId::ALL
+        .into_iter()
+        .filter(|t| *t != TaskId::SmithG1)
+        .map(|t| {
+            let text =
+                std::fs::read_to_string(repository().join(format!("solutions/{}.rs", t.name())));
+            (format!("{}.rs", t.name()), text.unwrap())
+        })
+        .collect();
+    files.push((
+        "smith_g1.rs".into(),
+        format!(
+            "use crate::prelude::*;\n\
+             macro_rules! grab {{ ($m:ident) => {{ $m!({:?}); }}; }}\n\
+             mod stolen {{ grab!(include); }}\n\
+             pub fn smith_g1(w: Vec3, alpha: f32) -> f32 {{ stolen::smith_g1(w, alpha) }}\n",
+            reference.display().to_string()
+        ),
+    ));
+    std::fs::create_dir_all(stealer.join("submission")).unwrap();
+    for (file, text) in files {
+        std::fs::write(stealer.join("submission").join(file), text).unwrap();
+    }
+    let mut run = Command::new("bash");
+    run.arg(gs.join("run_autograder"))
+        .env("PBRLAB_AUTOGRADER_ROOT", &stealer)
+        .env("PBRLAB_SOURCE", gs.join("pbrlab"))
+        .env("PBRLAB_SOURCE_CHECK", "off");
+    let out = clean(run).output().unwrap();
+    let text = std::fs::read_to_string(stealer.join("results/results.json")).unwrap_or_else(|_| {
+        panic!(
+            "stealer: no results\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        )
+    });
+    let results: Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(
+        gradescope_points(&results, TaskId::SmithG1).0,
+        0.0,
+        "{text}"
+    );
+    let (got, max) = gradescope_points(&results, TaskId::Reflect);
+    assert_eq!(got, max, "the rest grades: {text}");
     // PrairieLearn: the same built source (an image would hold exactly this), its entrypoint,
     // with the two submissions whose scores are fractions (the conversion of a partial score,
     // and a hostile file's output kept out of it).
