@@ -27,6 +27,13 @@
 //!
 //! Everything else, the submissions and results folders of a class run, the grader's
 //! command line and environment, other users' files, does not exist for the build.
+//!
+//! Where the kernel makes no user namespaces (Docker's default seccomp profile), the same
+//! view is made by Landlock ([`Mechanism::Landlock`]): cargo runs on the host's file system,
+//! reading only the files above (the framework's other sources can be dated, as cargo does,
+//! not read), listing the folders cargo lists, writing only a target folder of its own into
+//! which the framework's units are copied, with no `/proc` and no TCP. [`choose`] takes
+//! namespaces, else Landlock, else says why neither holds.
 
 use anyhow::{Context, bail};
 use serde::Deserialize;
@@ -393,14 +400,77 @@ pub struct ViewInputs<'a> {
     pub env: &'a [(String, String)],
 }
 
-/// One build's view: its spec file, the folder its target folder is, and the mount point of
-/// its root, all removed when it is dropped.
+/// How a view is made: new namespaces where the kernel allows them, Landlock where it does
+/// not (containers that refuse user namespaces), never neither.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mechanism {
+    /// `pbrlab-build-view`: new user, mount, PID, network and IPC namespaces, and a root of
+    /// named binds. The framework's other sources are empty files of the same date.
+    Namespaces,
+    /// Landlock: cargo runs on the host's file system, reading only what the view would
+    /// hold (other sources can be dated, not read; no `/proc`, no TCP), with a target folder
+    /// of its own into which the framework's units are copied.
+    Landlock,
+}
+
+impl std::fmt::Display for Mechanism {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Namespaces => "namespaces (user, mount, PID, network, IPC) and a root of named binds",
+            Self::Landlock => "Landlock (reads limited to the view's files, no /proc, no TCP) and a target folder of its own",
+        })
+    }
+}
+
+/// The variable that picks the mechanism (`namespaces` or `landlock`) instead of the first
+/// that works: the grader's, for tests and for hosts where one misbehaves.
+pub const MECHANISM: &str = "PBRLAB_BUILD_VIEW";
+
+/// The mechanism a view is made with here: `$PBRLAB_BUILD_VIEW` when set, else namespaces
+/// when a probe view can be made, else Landlock when the kernel enforces it; an error that
+/// says why neither is there otherwise.
+pub fn choose(helper: &Path, target: &Path) -> anyhow::Result<Mechanism> {
+    match std::env::var(MECHANISM).ok().as_deref() {
+        Some("namespaces") => return probe(helper, target).map(|()| Mechanism::Namespaces),
+        Some("landlock") => return landlock_scope::probe().map(|()| Mechanism::Landlock),
+        Some(other) => bail!("{MECHANISM}={other}: use `namespaces` or `landlock`"),
+        None => {}
+    }
+    let namespaces = match probe(helper, target) {
+        Ok(()) => return Ok(Mechanism::Namespaces),
+        Err(e) => e,
+    };
+    match landlock_scope::probe() {
+        Ok(()) => Ok(Mechanism::Landlock),
+        Err(landlock) => bail!(
+            "no build view can be made here: namespaces: {namespaces:#}; Landlock: {landlock:#}"
+        ),
+    }
+}
+
+/// One build's view: the folder its target folder is, and for namespaces its spec file and
+/// the mount point of its root (all removed when it is dropped), or for Landlock the
+/// prepared rules.
 pub struct View {
-    spec: PathBuf,
     target: PathBuf,
     own_target: PathBuf,
-    mount_point: PathBuf,
-    helper: PathBuf,
+    how: How,
+}
+
+/// The mechanism's part of a [`View`].
+enum How {
+    Namespaces {
+        spec: PathBuf,
+        mount_point: PathBuf,
+        helper: PathBuf,
+    },
+    Landlock {
+        root: PathBuf,
+        cargo: PathBuf,
+        args: Vec<String>,
+        env: Vec<(String, String)>,
+        scope: std::sync::Arc<landlock_scope::Scope>,
+    },
 }
 
 /// A number that no other view of this process has.
@@ -524,27 +594,146 @@ fn normal(path: &Path) -> PathBuf {
     out
 }
 
-impl View {
-    /// Writes the spec of a view for `inputs`, and makes its folders.
-    pub fn new(inputs: &ViewInputs) -> anyhow::Result<Self> {
+/// What a view holds of the repository: the files it reads whole (manifests, lock file,
+/// the files the view compiles), the framework's other sources (dated, not read), and the
+/// folders cargo dates.
+struct Repository {
+    files: Vec<PathBuf>,
+    placeholders: Vec<PathBuf>,
+    folders: BTreeSet<PathBuf>,
+}
+
+impl Repository {
+    fn of(inputs: &ViewInputs) -> anyhow::Result<Self> {
         let root = inputs.root;
+        let mut files: BTreeSet<PathBuf> = workspace_manifests(root)?.into_iter().collect();
+        files.insert(root.join("Cargo.lock"));
+        for name in ["Cargo.toml", "lib.rs", "build.rs"] {
+            files.insert(root.join("exercises").join(name));
+        }
+        for name in ["config.toml", "config"] {
+            files.insert(root.join(".cargo").join(name));
+        }
+        files.extend(inputs.framework.compiled.iter().cloned());
+        // Only the repository's files: the registry and toolchain are bound whole, and
+        // nothing of the target folder but the framework's units.
+        let in_repository =
+            |f: &PathBuf| f.starts_with(root) && !f.starts_with(inputs.target) && f.is_file();
+        let files: Vec<PathBuf> = files.into_iter().filter(in_repository).collect();
+        let placeholders: Vec<PathBuf> = inputs
+            .framework
+            .sources
+            .iter()
+            .filter(|f| in_repository(f) && !files.contains(f))
+            .cloned()
+            .collect();
+        let mut folders = inputs.framework.folders.clone();
+        for file in files.iter().chain(&placeholders) {
+            for folder in file.ancestors().skip(1) {
+                if !folder.starts_with(root) {
+                    break;
+                }
+                folders.insert(folder.to_path_buf());
+            }
+        }
+        Ok(Self {
+            files,
+            placeholders,
+            folders,
+        })
+    }
+}
+
+/// The environment of a build in a view: a few named variables, the build-affecting ones
+/// of the grader's ([`KEPT_VARIABLES`], `CARGO_PROFILE_*`), and `extra`.
+fn environment(
+    toolchain: &Toolchain,
+    home: &Path,
+    cargo_home: &Path,
+    target: &Path,
+    extra: &[(String, String)],
+) -> anyhow::Result<Vec<(String, String)>> {
+    let path = format!("{}/bin:/usr/bin:/bin", Spec::path(&toolchain.sysroot)?);
+    let mut env: Vec<(String, String)> = vec![
+        ("PATH".into(), path),
+        ("HOME".into(), Spec::path(home)?.into()),
+        ("TMPDIR".into(), Spec::path(home)?.into()),
+        ("CARGO_HOME".into(), Spec::path(cargo_home)?.into()),
+        ("CARGO_TARGET_DIR".into(), Spec::path(target)?.into()),
+        ("RUSTC".into(), Spec::path(&toolchain.rustc)?.into()),
+    ];
+    for key in KEPT_VARIABLES {
+        if let Ok(value) = std::env::var(key) {
+            env.push((key.to_string(), value));
+        }
+    }
+    for (key, value) in std::env::vars() {
+        if key.starts_with("CARGO_PROFILE_") {
+            env.push((key, value));
+        }
+    }
+    env.extend(extra.iter().cloned());
+    Ok(env)
+}
+
+/// Copies `from` (a file, or a folder and everything in it) to `to`, each file with its
+/// modification time (cargo compares a unit's outputs' times with its dependents').
+fn copy_all(from: &Path, to: &Path) -> anyhow::Result<()> {
+    if from.is_dir() {
+        std::fs::create_dir_all(to).with_context(|| format!("making {}", to.display()))?;
+        for entry in
+            std::fs::read_dir(from).with_context(|| format!("reading {}", from.display()))?
+        {
+            let entry = entry?;
+            copy_all(&entry.path(), &to.join(entry.file_name()))?;
+        }
+    } else {
+        std::fs::copy(from, to).with_context(|| format!("copying {}", from.display()))?;
+        let modified = std::fs::metadata(from)?.modified()?;
+        std::fs::File::options()
+            .write(true)
+            .open(to)?
+            .set_modified(modified)
+            .with_context(|| format!("dating {}", to.display()))?;
+    }
+    Ok(())
+}
+
+impl View {
+    /// Prepares a view for `inputs` made with `mechanism`, and its folders.
+    pub fn new(inputs: &ViewInputs, mechanism: Mechanism) -> anyhow::Result<Self> {
         let work = inputs.target.join("pbrlab-view");
         let id = format!("{}-{}", std::process::id(), next_id());
-        let view = Self {
-            spec: work.join(format!("spec-{id}")),
-            target: inputs.target.to_path_buf(),
-            own_target: work.join(format!("target-{id}")),
-            mount_point: work.join(format!("root-{id}")),
-            helper: inputs.framework.helper.clone(),
+        let own_target = work.join(format!("target-{id}"));
+        std::fs::create_dir_all(own_target.join("release"))
+            .with_context(|| format!("making {}", own_target.display()))?;
+        let how = match mechanism {
+            Mechanism::Namespaces => Self::namespaces(inputs, &work, &id, &own_target)?,
+            Mechanism::Landlock => Self::landlock(inputs, &own_target)?,
         };
-        std::fs::create_dir_all(view.own_target.join("release"))
-            .with_context(|| format!("making {}", view.own_target.display()))?;
-        std::fs::create_dir_all(&view.mount_point)
-            .with_context(|| format!("making {}", view.mount_point.display()))?;
+        Ok(Self {
+            target: inputs.target.to_path_buf(),
+            own_target,
+            how,
+        })
+    }
+
+    /// Writes the spec of a view made of namespaces.
+    fn namespaces(
+        inputs: &ViewInputs,
+        work: &Path,
+        id: &str,
+        own_target: &Path,
+    ) -> anyhow::Result<How> {
+        let root = inputs.root;
+        let spec_file = work.join(format!("spec-{id}"));
+        let mount_point = work.join(format!("root-{id}"));
+        std::fs::create_dir_all(&mount_point)
+            .with_context(|| format!("making {}", mount_point.display()))?;
         let mut spec = Spec {
             text: String::new(),
         };
-        spec.line(&["root", Spec::path(&view.mount_point)?])?;
+        spec.line(&["root", Spec::path(&mount_point)?])?;
         // The system: merged-/usr links as the host has them, programs and libraries.
         for top in ["bin", "sbin", "lib", "lib32", "lib64", "libx32"] {
             let host = Path::new("/").join(top);
@@ -584,76 +773,35 @@ impl View {
             spec.bind(&registry, &registry, false)?;
         }
         // The repository: what the framework's compilation read.
-        let mut files: BTreeSet<PathBuf> = BTreeSet::new();
-        for manifest in workspace_manifests(root)? {
-            files.insert(manifest);
-        }
-        files.insert(root.join("Cargo.lock"));
-        for name in ["Cargo.toml", "lib.rs", "build.rs"] {
-            files.insert(root.join("exercises").join(name));
-        }
-        for name in ["config.toml", "config"] {
-            files.insert(root.join(".cargo").join(name));
-        }
-        files.extend(inputs.framework.compiled.iter().cloned());
-        let mut folders = inputs.framework.folders.clone();
-        // Only the repository's files: the registry and toolchain are bound whole, and
-        // nothing of the target folder but the units below.
-        let in_repository =
-            |f: &&PathBuf| f.starts_with(root) && !f.starts_with(inputs.target) && f.is_file();
-        let files: Vec<&PathBuf> = files.iter().filter(in_repository).collect();
-        let placeholders: Vec<&PathBuf> = inputs
-            .framework
-            .sources
-            .iter()
-            .filter(in_repository)
-            .filter(|f| !files.contains(f))
-            .collect();
-        for file in files.iter().chain(&placeholders) {
-            for folder in file.ancestors().skip(1) {
-                if !folder.starts_with(root) {
-                    break;
-                }
-                folders.insert(folder.to_path_buf());
-            }
-        }
-        for file in &files {
+        let repository = Repository::of(inputs)?;
+        for file in &repository.files {
             spec.bind(file, file, false)?;
         }
-        for file in &placeholders {
+        for file in &repository.placeholders {
             spec.placeholder(file)?;
         }
         // A folder the exercise files are bound on is theirs, time and all.
-        for folder in folders.iter().filter(|f| !f.starts_with(inputs.exercises)) {
+        for folder in repository
+            .folders
+            .iter()
+            .filter(|f| !f.starts_with(inputs.exercises))
+        {
             spec.dir(folder)?;
         }
         // The target folder: this build's own, with the framework's units in it.
-        spec.bind(&view.own_target, inputs.target, true)?;
+        spec.bind(own_target, inputs.target, true)?;
         for unit in &inputs.framework.units {
             spec.bind(unit, unit, false)?;
         }
         spec.bind(inputs.exercises, inputs.exercises, false)?;
         spec.line(&["cwd", Spec::path(root)?])?;
-        let path = format!("{}/bin:/usr/bin:/bin", Spec::path(&toolchain.sysroot)?);
-        let mut env: Vec<(String, String)> = vec![
-            ("PATH".into(), path),
-            ("HOME".into(), "/tmp".into()),
-            ("TMPDIR".into(), "/tmp".into()),
-            ("CARGO_HOME".into(), Spec::path(&cargo_home)?.into()),
-            ("CARGO_TARGET_DIR".into(), Spec::path(inputs.target)?.into()),
-            ("RUSTC".into(), Spec::path(&toolchain.rustc)?.into()),
-        ];
-        for key in KEPT_VARIABLES {
-            if let Ok(value) = std::env::var(key) {
-                env.push((key.to_string(), value));
-            }
-        }
-        for (key, value) in std::env::vars() {
-            if key.starts_with("CARGO_PROFILE_") {
-                env.push((key, value));
-            }
-        }
-        env.extend(inputs.env.iter().cloned());
+        let env = environment(
+            toolchain,
+            Path::new("/tmp"),
+            &cargo_home,
+            inputs.target,
+            inputs.env,
+        )?;
         for (key, value) in &env {
             spec.line(&["env", key, value])?;
         }
@@ -661,37 +809,136 @@ impl View {
         let mut run = vec!["run", cargo];
         run.extend(inputs.cargo_args.iter().map(String::as_str));
         spec.line(&run)?;
-        std::fs::write(&view.spec, spec.text)
-            .with_context(|| format!("writing {}", view.spec.display()))?;
-        Ok(view)
+        std::fs::write(&spec_file, spec.text)
+            .with_context(|| format!("writing {}", spec_file.display()))?;
+        Ok(How::Namespaces {
+            spec: spec_file,
+            mount_point,
+            helper: inputs.framework.helper.clone(),
+        })
     }
 
-    /// The command that runs the build in the view (its environment is the spec's).
+    /// Prepares a view made by Landlock: the framework's units copied into the build's own
+    /// target folder (copied, not linked: nothing the build writes reaches the originals),
+    /// and the rules.
+    fn landlock(inputs: &ViewInputs, own_target: &Path) -> anyhow::Result<How> {
+        let release = inputs.target.join("release");
+        for unit in &inputs.framework.units {
+            let rest = unit
+                .strip_prefix(&release)
+                .with_context(|| format!("{} is not in {}", unit.display(), release.display()))?;
+            let to = own_target.join("release").join(rest);
+            if let Some(parent) = to.parent() {
+                std::fs::create_dir_all(parent)?;
+            }
+            copy_all(unit, &to)?;
+        }
+        let home = own_target.join("home");
+        std::fs::create_dir_all(&home)?;
+        let toolchain = inputs.toolchain;
+        let cargo_home = cargo_home()?;
+        let repository = Repository::of(inputs)?;
+        let mut readable: Vec<PathBuf> = ["/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64"]
+            .iter()
+            .map(PathBuf::from)
+            .chain(ETC_FILES.iter().map(|f| Path::new("/etc").join(f)))
+            .chain(DEVICES.iter().map(|d| Path::new("/dev").join(d)))
+            .collect();
+        readable.extend([
+            toolchain.sysroot.clone(),
+            cargo_home.join("registry"),
+            cargo_home.join("config.toml"),
+            cargo_home.join("config"),
+            inputs.exercises.to_path_buf(),
+        ]);
+        readable.extend(repository.files.iter().cloned());
+        let writable = vec![own_target.to_path_buf()];
+        let writable_files: Vec<PathBuf> =
+            [".package-cache", ".package-cache-mutate", ".global-cache"]
+                .iter()
+                .map(|f| cargo_home.join(f))
+                .chain(["/dev/null".into()])
+                .collect();
+        // The folders cargo lists: the framework's sources in them can be dated, not read.
+        let listable: Vec<PathBuf> = repository.folders.iter().cloned().collect();
+        let scope = landlock_scope::Scope::new(&readable, &listable, &writable, &writable_files)?;
+        let env = environment(toolchain, &home, &cargo_home, own_target, inputs.env)?;
+        Ok(How::Landlock {
+            root: inputs.root.to_path_buf(),
+            cargo: toolchain.cargo.clone(),
+            args: inputs.cargo_args.to_vec(),
+            env,
+            scope: std::sync::Arc::new(scope),
+        })
+    }
+
+    /// The command that runs the build in the view (its environment is the view's).
     pub fn command(&self) -> Command {
-        let mut command = Command::new(&self.helper);
-        command.arg(&self.spec).env_clear();
-        command
+        match &self.how {
+            How::Namespaces { spec, helper, .. } => {
+                let mut command = Command::new(helper);
+                command.arg(spec).env_clear();
+                command
+            }
+            How::Landlock {
+                root,
+                cargo,
+                args,
+                env,
+                scope,
+            } => {
+                let mut command = Command::new(cargo);
+                command
+                    .args(args)
+                    .current_dir(root)
+                    .env_clear()
+                    .envs(env.iter().map(|(k, v)| (k, v)));
+                let scope = scope.clone();
+                // SAFETY: between fork and exec the closure makes the two Landlock system
+                // calls of a domain prepared before the fork, and allocates nothing.
+                unsafe {
+                    std::os::unix::process::CommandExt::pre_exec(&mut command, move || {
+                        scope.enter()
+                    });
+                }
+                command
+            }
+        }
     }
 
     /// Where a file the build wrote at `path` (as the build names it) is on the host.
     pub fn on_host(&self, path: &Path) -> PathBuf {
         match path.strip_prefix(&self.target) {
-            Ok(rest) => self.own_target.join(rest),
+            Ok(rest) if matches!(self.how, How::Namespaces { .. }) => self.own_target.join(rest),
+            _ => path.to_path_buf(),
+        }
+    }
+
+    /// Where cargo would have put a file the build wrote at `path` (as the build names it)
+    /// had it built outside a view: in the workspace's own target folder.
+    pub fn outside(&self, path: &Path) -> PathBuf {
+        match path.strip_prefix(&self.own_target) {
+            Ok(rest) => self.target.join(rest),
             Err(_) => path.to_path_buf(),
         }
     }
 
     /// True when `status` says that the view could not be made (cargo never ran).
-    pub fn failed(status: &std::process::ExitStatus) -> bool {
-        status.code() == Some(VIEW_FAILED)
+    pub fn failed(&self, status: &std::process::ExitStatus) -> bool {
+        matches!(self.how, How::Namespaces { .. }) && status.code() == Some(VIEW_FAILED)
     }
 }
 
 impl Drop for View {
     fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.spec);
         let _ = std::fs::remove_dir_all(&self.own_target);
-        let _ = std::fs::remove_dir(&self.mount_point);
+        if let How::Namespaces {
+            spec, mount_point, ..
+        } = &self.how
+        {
+            let _ = std::fs::remove_file(spec);
+            let _ = std::fs::remove_dir(mount_point);
+        }
     }
 }
 
@@ -733,6 +980,126 @@ pub fn probe(helper: &Path, target: &Path) -> anyhow::Result<()> {
         String::from_utf8_lossy(&out.stderr).trim()
     );
     Ok(())
+}
+
+/// The Landlock rules of a view made without namespaces ([`super::Mechanism::Landlock`]).
+mod landlock_scope {
+    use anyhow::Context;
+    use std::path::{Path, PathBuf};
+
+    /// The newest Landlock ABI this code knows; older kernels enforce what they can (the
+    /// file-reading rights, which are what a view needs, are in every version).
+    #[cfg(target_os = "linux")]
+    const ABI: landlock::ABI = landlock::ABI::V6;
+
+    /// A Landlock domain prepared by the grader for a process it starts, entered by that
+    /// process between `fork` and `exec` ([`Scope::enter`]).
+    pub struct Scope {
+        #[cfg(target_os = "linux")]
+        ruleset: std::sync::Mutex<Option<landlock::RulesetCreated>>,
+    }
+
+    fn existing(paths: &[PathBuf]) -> Vec<&Path> {
+        paths
+            .iter()
+            .filter(|p| p.exists())
+            .map(PathBuf::as_path)
+            .collect()
+    }
+
+    impl Scope {
+        /// Prepares the domain: `readable` files and folders (and what is in them) may be
+        /// read and executed, `listable` folders listed, `writable` folders read and
+        /// written, the `writable_files` written; no TCP. Paths that do not exist are left
+        /// out.
+        pub fn new(
+            readable: &[PathBuf],
+            listable: &[PathBuf],
+            writable: &[PathBuf],
+            writable_files: &[PathBuf],
+        ) -> anyhow::Result<Self> {
+            #[cfg(target_os = "linux")]
+            {
+                use landlock::{
+                    Access, AccessFs, AccessNet, Ruleset, RulesetAttr, RulesetCreatedAttr,
+                    path_beneath_rules,
+                };
+                let ruleset = Ruleset::default()
+                    .handle_access(AccessFs::from_all(ABI))?
+                    .handle_access(AccessNet::from_all(ABI))?
+                    .create()?
+                    .add_rules(path_beneath_rules(
+                        existing(readable),
+                        AccessFs::from_read(ABI),
+                    ))?
+                    .add_rules(path_beneath_rules(existing(listable), AccessFs::ReadDir))?
+                    .add_rules(path_beneath_rules(
+                        existing(writable),
+                        AccessFs::from_all(ABI),
+                    ))?
+                    .add_rules(path_beneath_rules(
+                        existing(writable_files),
+                        AccessFs::ReadFile | AccessFs::WriteFile,
+                    ))?;
+                Ok(Self {
+                    ruleset: std::sync::Mutex::new(Some(ruleset)),
+                })
+            }
+            #[cfg(not(target_os = "linux"))]
+            {
+                let _ = (readable, listable, writable, writable_files);
+                anyhow::bail!("Landlock is Linux only")
+            }
+        }
+
+        /// Puts the domain in force for the calling process and what it starts, or fails
+        /// when the kernel does not enforce it. Meant for the child between `fork` and
+        /// `exec` (`CommandExt::pre_exec`): it makes two system calls and allocates
+        /// nothing.
+        pub fn enter(&self) -> std::io::Result<()> {
+            #[cfg(target_os = "linux")]
+            {
+                use landlock::RulesetStatus;
+                let ruleset = self
+                    .ruleset
+                    .lock()
+                    .ok()
+                    .and_then(|mut r| r.take())
+                    .ok_or_else(|| std::io::Error::other("the Landlock domain was used already"))?;
+                let status = ruleset
+                    .restrict_self()
+                    .map_err(|_| std::io::Error::other("landlock_restrict_self failed"))?;
+                if status.ruleset == RulesetStatus::NotEnforced {
+                    return Err(std::io::Error::other(
+                        "the kernel does not enforce Landlock",
+                    ));
+                }
+                Ok(())
+            }
+            #[cfg(not(target_os = "linux"))]
+            Err(std::io::Error::other("Landlock is Linux only"))
+        }
+    }
+
+    /// Runs `/usr/bin/true` in a domain that reads only the system: an error says why this
+    /// kernel enforces no Landlock.
+    pub fn probe() -> anyhow::Result<()> {
+        let system: Vec<PathBuf> = ["/usr", "/bin", "/lib", "/lib64"].map(PathBuf::from).into();
+        let scope = Scope::new(&system, &[], &[], &[])?;
+        let mut command = std::process::Command::new("/usr/bin/true");
+        // SAFETY: `enter` makes two system calls and allocates nothing.
+        unsafe {
+            std::os::unix::process::CommandExt::pre_exec(&mut command, move || scope.enter());
+        }
+        let status = command
+            .status()
+            .context("starting a process under Landlock")?;
+        anyhow::ensure!(
+            status.success(),
+            "a process under Landlock failed: {status}"
+        );
+        Ok(())
+    }
 }
 
 /// The cargo home of the grader (`$CARGO_HOME`, or `~/.cargo`).

@@ -7,12 +7,12 @@
 //! compiler's message, and grades every other task as written.
 //!
 //! Every round compiles in the build's view ([`super::build_view`]): the student's crate
-//! sees the framework's sources and compiled units, the toolchain and its own files, and
-//! nothing else. Where the kernel allows no view (no user namespaces), a graded build
-//! (`bounded`) is refused, and a student's own build of a handout (which holds nothing but
-//! the student's files) runs as a plain cargo build.
+//! sees the framework's compiled units, the toolchain and its own files, and nothing else,
+//! made with namespaces or, where the kernel has none, Landlock. Where neither works, a
+//! graded build (`bounded`) is refused, and a student's own build of a handout (which
+//! holds nothing but the student's files) runs as a plain cargo build.
 
-use super::build_view::{Framework, Toolchain, View, ViewInputs};
+use super::build_view::{Framework, Mechanism, Toolchain, View, ViewInputs};
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use serde::{Deserialize, Serialize};
@@ -307,8 +307,9 @@ impl StudentBuild<'_> {
     fn place_binaries(&self, round: &mut Round, view: Option<&View>) -> anyhow::Result<()> {
         for binary in &mut round.binaries {
             let built = view.map_or_else(|| binary.clone(), |v| v.on_host(binary));
+            let outside = view.map_or_else(|| binary.clone(), |v| v.outside(binary));
             let name = binary.file_name().context("a binary without a name")?;
-            let placed = self.output.map_or_else(|| binary.clone(), |o| o.join(name));
+            let placed = self.output.map_or(outside, |o| o.join(name));
             if placed == built {
                 continue;
             }
@@ -404,16 +405,19 @@ impl StudentBuild<'_> {
     /// The toolchain and the framework a view needs, prepared once per process (a class
     /// run builds many submissions on one framework); `None` where the kernel makes no
     /// view and this build may run without one.
-    fn prepare_view(&self, target: &Path) -> anyhow::Result<Option<(Toolchain, Framework)>> {
-        type Prepared = (PathBuf, Vec<String>, Toolchain, Framework);
+    fn prepare_view(
+        &self,
+        target: &Path,
+    ) -> anyhow::Result<Option<(Toolchain, Framework, Mechanism)>> {
+        type Prepared = (PathBuf, Vec<String>, Toolchain, Framework, Mechanism);
         static PREPARED: std::sync::Mutex<Option<Prepared>> = std::sync::Mutex::new(None);
         let args = self.framework_args(self.offline || self.bounded);
         let mut prepared = PREPARED.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((root, cached, toolchain, framework)) = prepared.as_ref()
+        if let Some((root, cached, toolchain, framework, mechanism)) = prepared.as_ref()
             && root == self.root
             && *cached == args
         {
-            return Ok(Some((toolchain.clone(), framework.clone())));
+            return Ok(Some((toolchain.clone(), framework.clone(), *mechanism)));
         }
         let toolchain = Toolchain::resolve(self.root)?;
         let stubs = self.shipped_stubs(target)?;
@@ -425,27 +429,31 @@ impl StudentBuild<'_> {
             &stubs,
             self.offline || self.bounded,
         )?;
-        if let Err(why) = super::build_view::probe(&framework.helper, target) {
-            // A student's own build of a handout holds nothing but the student's files.
-            let handout = !self.root.join("solutions").exists();
-            if self.bounded || !handout {
-                return Err(why.context(
-                    "refusing to build student code without the build's view: it would read \
+        let mechanism = match super::build_view::choose(&framework.helper, target) {
+            Ok(mechanism) => mechanism,
+            Err(why) => {
+                // A student's own build of a handout holds nothing but the student's files.
+                let handout = !self.root.join("solutions").exists();
+                if self.bounded || !handout {
+                    return Err(why.context(
+                        "refusing to build student code without the build's view: it would read \
                      the whole repository and every process's command line",
-                ));
+                    ));
+                }
+                if self.echo {
+                    eprintln!("pbrlab: building without the build's view ({why:#})");
+                }
+                return Ok(None);
             }
-            if self.echo {
-                eprintln!("pbrlab: building without the build's view ({why:#})");
-            }
-            return Ok(None);
-        }
+        };
         *prepared = Some((
             self.root.to_path_buf(),
             args,
             toolchain.clone(),
             framework.clone(),
+            mechanism,
         ));
-        Ok(Some((toolchain, framework)))
+        Ok(Some((toolchain, framework, mechanism)))
     }
 
     /// Runs cargo once, reading its JSON messages; `left` of the build's `deadline`
@@ -478,7 +486,7 @@ impl StudentBuild<'_> {
             env.push(("CARGO_TERM_PROGRESS_WIDTH".into(), "100".into()));
         }
         let view = match self.prepare_view(&target)? {
-            Some((toolchain, framework)) => {
+            Some((toolchain, framework, mechanism)) => {
                 env.push((
                     "PBRLAB_EXERCISES".into(),
                     compiled
@@ -486,15 +494,18 @@ impl StudentBuild<'_> {
                         .context("the exercise folder's path is not UTF-8")?
                         .into(),
                 ));
-                Some(View::new(&ViewInputs {
-                    root: self.root,
-                    target: &target,
-                    toolchain: &toolchain,
-                    framework: &framework,
-                    exercises: compiled,
-                    cargo_args: &self.cargo_args(true),
-                    env: &env,
-                })?)
+                Some(View::new(
+                    &ViewInputs {
+                        root: self.root,
+                        target: &target,
+                        toolchain: &toolchain,
+                        framework: &framework,
+                        exercises: compiled,
+                        cargo_args: &self.cargo_args(true),
+                        env: &env,
+                    },
+                    mechanism,
+                )?)
             }
             None => None,
         };
@@ -603,7 +614,7 @@ impl StudentBuild<'_> {
 
         round.success = round.success && status.success();
         let lines = side.join().unwrap_or_default();
-        if view.is_some() && View::failed(&status) {
+        if view.as_ref().is_some_and(|v| v.failed(&status)) {
             bail!("the build's view could not be made:\n{}", lines.join("\n"));
         }
         if round.success {

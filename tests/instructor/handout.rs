@@ -415,6 +415,61 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         String::from_utf8_lossy(&test.stderr)
     );
     mixed_renders_take_the_compiled_reference_that_fits_the_build(&dir, &library);
+    grade_sees_nothing_outside_the_handout(&dir);
+}
+
+/// `grade` in the handout, with the exercise check off: an exercise file that assembles an
+/// `include!` of the instructor's reference (on this machine, by its absolute path) in a
+/// macro does not compile, because the build's view holds nothing outside the handout, and
+/// costs its own task only.
+fn grade_sees_nothing_outside_the_handout(dir: &Path) {
+    let reference = root().join("solutions/phong.rs");
+    let file = dir.join("exercises/phong.rs");
+    let shipped = std::fs::read_to_string(&file).unwrap();
+    std::fs::write(
+        &file,
+        format!(
+            "use crate::prelude::*;\n\
+             macro_rules! grab {{ ($m:ident) => {{ $m!({:?}); }}; }}\n\
+             mod stolen {{ grab!(include); }}\n\
+             pub use stolen::*;\n",
+            reference.display().to_string()
+        ),
+    )
+    .unwrap();
+    let out = cargo_command(
+        dir,
+        &[
+            "run",
+            "--release",
+            "-q",
+            "--",
+            "grade",
+            "phong",
+            "--format",
+            "json",
+        ],
+    )
+    .env("PBRLAB_SOURCE_CHECK", "off")
+    .output()
+    .unwrap();
+    std::fs::write(&file, shipped).unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: pbrlab::grade::verdict::GradeReport = serde_json::from_slice(&out.stdout).unwrap();
+    let phong = report.tasks.iter().find(|t| t.task == "phong").unwrap();
+    assert_eq!(phong.points, 0.0);
+    assert!(
+        matches!(
+            phong.status,
+            pbrlab::grade::verdict::TaskStatus::CompileError { .. }
+        ),
+        "{:?}",
+        phong.status
+    );
 }
 
 /// The JSON report of `cargo run --release -- grade TASKS` in the handout at `dir`, which
