@@ -32,7 +32,7 @@
 //! view is made by Landlock ([`Mechanism::Landlock`]): cargo runs on the host's file system,
 //! reading only the files above (the framework's other sources can be dated, as cargo does,
 //! not read), listing the folders cargo lists, writing only a target folder of its own into
-//! which the framework's units are copied, with no `/proc` and no TCP. [`choose`] takes
+//! which the framework's units are linked, with no `/proc` and no TCP. [`choose`] takes
 //! namespaces, else Landlock, else says why neither holds.
 
 use anyhow::{Context, bail};
@@ -409,7 +409,7 @@ pub enum Mechanism {
     Namespaces,
     /// Landlock: cargo runs on the host's file system, reading only what the view would
     /// hold (other sources can be dated, not read; no `/proc`, no TCP), with a target folder
-    /// of its own into which the framework's units are copied.
+    /// of its own into which the framework's units are linked.
     Landlock,
 }
 
@@ -676,8 +676,11 @@ fn environment(
     Ok(env)
 }
 
-/// Copies `from` (a file, or a folder and everything in it) to `to`, each file with its
-/// modification time (cargo compares a unit's outputs' times with its dependents').
+/// Links `from` (a file, or a folder and everything in it) at `to`, file by file: a hard
+/// link where the file system allows one, else a copy with the file's modification time
+/// (cargo compares a unit's outputs' times with its dependents'). A link is safe here: the
+/// build reads these units, and a unit it found out of date could not be rebuilt in place
+/// (its sources cannot be read), while cargo only removes or renames what it replaces.
 fn copy_all(from: &Path, to: &Path) -> anyhow::Result<()> {
     if from.is_dir() {
         std::fs::create_dir_all(to).with_context(|| format!("making {}", to.display()))?;
@@ -687,7 +690,7 @@ fn copy_all(from: &Path, to: &Path) -> anyhow::Result<()> {
             let entry = entry?;
             copy_all(&entry.path(), &to.join(entry.file_name()))?;
         }
-    } else {
+    } else if std::fs::hard_link(from, to).is_err() {
         std::fs::copy(from, to).with_context(|| format!("copying {}", from.display()))?;
         let modified = std::fs::metadata(from)?.modified()?;
         std::fs::File::options()
@@ -818,9 +821,8 @@ impl View {
         })
     }
 
-    /// Prepares a view made by Landlock: the framework's units copied into the build's own
-    /// target folder (copied, not linked: nothing the build writes reaches the originals),
-    /// and the rules.
+    /// Prepares a view made by Landlock: the framework's units linked into the build's own
+    /// target folder ([`copy_all`]), and the rules.
     fn landlock(inputs: &ViewInputs, own_target: &Path) -> anyhow::Result<How> {
         let release = inputs.target.join("release");
         for unit in &inputs.framework.units {
