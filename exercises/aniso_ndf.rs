@@ -21,6 +21,9 @@
 //! - The isotropic textbook form `α² / (π ((n·h)²(α² − 1) + 1)²)` cancels badly in f32 for
 //!   small α (2.6 % wrong at α = 1e-3, infinite at α = 1e-4). The component form above does
 //!   not; prefer it.
+//! - The graded directions include cosines down to the smallest positive f32 (`1e-45`, a
+//!   subnormal), where `cos²θ` and `cos⁴θ` underflow to 0 and `tan θ` overflows, and
+//!   directions exactly along the frame's axes: the answer must stay finite there.
 //!
 //! ## What the worksheet gets wrong
 //! Its values are essentially right (0.204, and 0.0048 truncated to 0.004). Its explanation

@@ -12,6 +12,9 @@
 //!   exponential has long been 0: return 0.
 //! - `h` below the surface: 0.
 //! - `α = 0` is a delta distribution: raise α to [`crate::bsdf::MIN_ALPHA`].
+//! - The graded directions include cosines down to the smallest positive f32 (`1e-45`, a
+//!   subnormal), where `cos²θ` and `cos⁴θ` underflow to 0 and `tan θ` overflows, and
+//!   directions exactly along the frame's axes: the answer must stay finite there.
 //!
 //! ## What the worksheet gets wrong
 //! At θ = 85° it uses the half vector (0.707, 0, 0.707), which belongs to θ = 90°. The half

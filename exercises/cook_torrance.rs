@@ -36,6 +36,10 @@
 //!   above the horizon rules most of that out; still guard a tiny `|wo + wi|²`.
 //! - Grazing `wo` with `G = 1` grows like `1/cos θo` (12 276 at 89.99999° for α = 0.5); with
 //!   Smith's `G1` the cosine cancels and the value tends to 0.008570 (F0 = 0.04, wi = n).
+//! - Cosines go down to the smallest positive f32 (`1e-45`, a subnormal): there
+//!   `4 cos θo cos θi` underflows to 0 while `G1` is tiny, and `D G / (4 cos θo cos θi)` is
+//!   `0/0`. Divide each `G1` by its own cosine. A mirror (`α = 0`) at two such cosines is
+//!   beyond f32's range in some orders of the product: ∞ is accepted there.
 //!
 //! ## What the worksheet gets wrong
 //! - §3.3 calls the light's contribution a radiance; a point light delivers irradiance

@@ -25,6 +25,7 @@
 //!   direction on or below the horizon, where the pdf is 0 and `f cos / pdf` would be 0/0.
 //! - Clamp arguments of square roots that rounding could push below 0.
 //! - `cosine_pdf` is 0 below (and on) the horizon.
+//! - `cosine_pdf` is graded at cosines down to the smallest positive f32 (`1e-45`).
 
 use crate::prelude::*;
 

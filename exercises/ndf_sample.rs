@@ -25,6 +25,9 @@
 //! - A reflected `wi` at or below the horizon is not a valid sample either: `None`.
 //! - Roughness 0 must not give NaN: raise it to [`crate::bsdf::MIN_ALPHA`].
 //! - In `ndf_pdf`, `wo ≈ −wi` has no usable half vector: density 0.
+//! - The graded directions include cosines down to the smallest positive f32 (`1e-45`, a
+//!   subnormal), where `cos²θ` and `cos⁴θ` underflow to 0 and `tan θ` overflows, and
+//!   directions exactly along the frame's axes: the answer must stay finite there.
 //!
 //! ## What the worksheet gets wrong
 //! Nothing in the formula; it writes `4 (wo·h)` where `4 |wo·h|` is safer, and never says

@@ -24,6 +24,9 @@
 //!   `r·wo ≤ 0` the formula as written gives `max(0, r·wo)^0 = 1` (what `powf` gives) and
 //!   the limit `n → 0⁺` gives 0: either is accepted, but it must be one of the two (a
 //!   power computed as `exp(n ln x)` gives NaN there).
+//! - The graded directions include cosines down to the smallest positive f32 (`1e-45`, a
+//!   subnormal), where `cos²θ` and `cos⁴θ` underflow to 0 and `tan θ` overflows, and
+//!   directions exactly along the frame's axes: the answer must stay finite there.
 //!
 //! ## What the worksheet gets wrong
 //! It asks you to show that this BRDF violates reciprocity. It does not: write `r(wi)·wo`

@@ -23,6 +23,8 @@
 //! - The normal may not have unit length (a mesh normal after a non-uniform scale, say):
 //!   with `n = (0, 2, 0)` the textbook formula scales the normal part by `|n|² = 4`.
 //! - At grazing incidence (`wo·n = 0`) the answer is `−wo`: the ray goes on unchanged.
+//! - `n` may also have a length within 1e-3 of 1: divide by `n·n` (or normalise) always;
+//!   skipping it "because `n` is nearly unit" is off by that much, and the grader checks.
 //!
 //! ## Check yourself
 //! `wo = (0.6, 0.8, 0)`, `n = (0, 1, 0)` or `(0, 2, 0)` → `(−0.6, 0.8, 0)`.

@@ -21,6 +21,8 @@
 //! - The critical angle `asin(eta_t/eta_i)` exists only when light goes from dense to less
 //!   dense (`eta_i > eta_t`). Otherwise the formula gives NaN (`asin(1.5)`) or 90° (equal
 //!   indices), and neither is a critical angle: return `None`.
+//! - `n` may have any non-zero length, also within 1e-3 of 1: normalise it always.
+//! - Incident cosines go down to the smallest positive f32 (`1e-45`, a subnormal).
 //!
 //! ## The layer stack
 //! In a stack of parallel layers the product `eta sin θ` is the same in every medium, so every

@@ -17,6 +17,10 @@
 //! - **Tiny `α² tan²θ`** (smooth surfaces, near-normal directions): `sqrt(1 + a) − 1`
 //!   cancels to exactly 0 in f32 for `a = 1e-8`. Rewrite it so nothing is subtracted, or use
 //!   the cosine form that §3.2.3 asks you to derive.
+//! - The graded directions include cosines down to the smallest positive f32 (`1e-45`, a
+//!   subnormal), where `cos²θ` and `cos⁴θ` underflow to 0 and `tan θ` overflows, and
+//!   directions exactly along the frame's axes: `G1 ≈ 2 cos θ / (α sin θ)` there, never
+//!   NaN.
 //!
 //! ## What the worksheet gets wrong
 //! It never derives `Λ`, and describes it as "the average slope of visible microfacets",

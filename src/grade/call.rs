@@ -230,6 +230,9 @@ impl Call {
 /// implementation may introduce in the quantities it derives from its inputs.
 pub const JITTER_ULPS: f64 = 4.0;
 
+/// The smallest positive (subnormal) f32, 2^-149.
+const SMALLEST_SUBNORMAL: f64 = 1.401_298_464_324_817e-45;
+
 /// The inputs that are directions: [`Call::jitters`] also turns them a little.
 const DIRECTIONS: [&str; 6] = ["w", "wo", "wi", "h", "n", "tangent"];
 
@@ -254,14 +257,16 @@ impl Call {
     /// lose to rounding, to measure how far correct answers can lie from the reference's:
     /// - every real input by up to [`JITTER_ULPS`] ulps, by a factor that depends only on
     ///   `seed` and the value, so equal inputs stay equal (equal indices, `αx = αy`) and
-    ///   zeros stay zero;
+    ///   zeros stay zero; a subnormal one (a cosine of 1e-45) by up to as many of the
+    ///   smallest subnormal, away from 0;
     /// - every direction turned by `JITTER_ULPS · ε / sin θ` near a pole of the local
     ///   normal or of another direction, or by `JITTER_ULPS · ε / cos θ` near the horizon
     ///   of another direction (at most `MAX_TURN`), toward that axis (landing on a pole
     ///   that close), away from it, or sideways: an implementation that goes through
     ///   `sqrt(1 − cos²)`, `acos` or `asin` (the polar form of an NDF, Snell's law by
     ///   angles) loses that much there, and a direction stored in f32 is not quite unit, so
-    ///   `z` and `(x, y)` disagree near the normal.
+    ///   `z` and `(x, y)` disagree near the normal; and its length stretched by up to
+    ///   [`JITTER_ULPS`] ulps.
     ///
     /// Integers (seeds, counts) are kept. Returns `count` such calls, one per seed
     /// `1..=count`.
@@ -272,7 +277,15 @@ impl Call {
                     let x = n.as_f64().unwrap_or(0.0);
                     let u = hash_unit(seed, x.to_bits());
                     let factor = 1.0 + (2.0 * u - 1.0) * JITTER_ULPS * f32::EPSILON as f64;
-                    if let Some(m) = serde_json::Number::from_f64(x * factor) {
+                    // A subnormal f32 has fewer digits than ulps can move: move it by up
+                    // to `JITTER_ULPS` of the smallest subnormal instead, keeping its sign.
+                    let moved = if x != 0.0 && x.abs() < f32::MIN_POSITIVE as f64 {
+                        let step = JITTER_ULPS * SMALLEST_SUBNORMAL * u;
+                        x.signum() * (x.abs() + step)
+                    } else {
+                        x * factor
+                    };
+                    if let Some(m) = serde_json::Number::from_f64(moved) {
                         *n = m;
                     }
                 }
@@ -378,23 +391,39 @@ impl Turn {
     }
 
     /// The turned vector for `seed`: toward the axis (landing on a pole that close), away
-    /// from it, or sideways at an azimuth from `seed` and `salt`.
+    /// from it, or sideways at an azimuth from `seed` and `salt`; its length stretched by
+    /// up to [`JITTER_ULPS`] ulps.
     fn sample(&self, seed: u64, salt: usize) -> DVec3 {
         let (d, axis, turn) = (self.d, self.axis, self.angle);
         let at = d.dot(axis).clamp(-1.0, 1.0).acos();
-        let off = (d - axis * d.dot(axis)).normalize_or_zero();
+        // On the axis itself (`wi` exactly along the fibre), away is every way: pick one
+        // per direction, so that directions on one line move apart. (What is left of `d`
+        // off the axis there is rounding, the same for every direction on that line.)
+        let off = if d.cross(axis).length() < 1e-12 {
+            sideways(d, seed, salt)
+        } else {
+            (d - axis * d.dot(axis)).normalize()
+        };
         let turned = match seed % 3 {
             1 if self.is_pole && at <= turn => axis,
             1 => axis * (at - turn).cos() + off * (at - turn).sin(),
             2 => axis * (at + turn).cos() + off * (at + turn).sin(),
-            _ => {
-                let phi = std::f64::consts::TAU * hash_unit(seed, salt as u64 + 1);
-                let (a, b) = d.any_orthonormal_pair();
-                d * turn.cos() + (a * phi.cos() + b * phi.sin()) * turn.sin()
-            }
+            _ => d * turn.cos() + sideways(d, seed, salt) * turn.sin(),
         };
-        turned * self.len
+        // And stretched within rounding: an f32 direction is unit only to a few ulps, and
+        // code that normalises it and code that does not differ by that much (`sin θ`
+        // from a dot product near ±1 by much more).
+        let stretch = 1.0
+            + (2.0 * hash_unit(seed, salt as u64 + 7) - 1.0) * JITTER_ULPS * f32::EPSILON as f64;
+        turned * self.len * stretch
     }
+}
+
+/// A unit vector perpendicular to `d`, at an azimuth from `seed` and `salt`.
+fn sideways(d: DVec3, seed: u64, salt: usize) -> DVec3 {
+    let phi = std::f64::consts::TAU * hash_unit(seed, salt as u64 + 1);
+    let (a, b) = d.any_orthonormal_pair();
+    a * phi.cos() + b * phi.sin()
 }
 
 /// A vector for messages: `(0.6, -0.8, 0)`.

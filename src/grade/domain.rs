@@ -34,6 +34,11 @@ pub struct Boundary {
     pub at: f64,
     /// What happens there, as a student reads it in a failure (`the horizon`, `TIR`).
     pub what: &'static str,
+    /// Whether the contract's answer is continuous across it (`sin θ → 0` along a fibre)
+    /// rather than jumping (`D = 0` at or below the horizon). A continuous boundary is
+    /// only steep, so an input moved off it within rounding measures the contract's
+    /// conditioning there.
+    pub continuous: bool,
 }
 
 /// One declared parameter of a task function, or one quantity derived from its
@@ -69,8 +74,18 @@ pub struct Param {
     pub on_boundaries: bool,
 }
 
-/// The share of draws that are exactly a boundary or a special value.
+/// How close (relative, see [`Param::scale`]) a value computed in f64 from f32 inputs
+/// lies to a boundary when those inputs lie on it exactly (`cos(wi, t)` for `wi = −t`).
+pub const ON_BOUNDARY: f64 = 1e-12;
+
+/// The share of drawn directions whose azimuth lies exactly along an axis of the frame.
+pub const AXIS_AZIMUTHS: f64 = 1.0 / 16.0;
+
+/// The share of draws that are exactly a boundary (all of it on a special value when the
+/// parameter has no boundary drawn exactly).
 const EXACT: f32 = 0.1;
+/// The share of draws that are exactly a special value, beside [`EXACT`].
+const SPECIAL: f32 = 0.05;
 /// The share of draws in a log-spaced band on either side of a boundary.
 const NEAR: f32 = 0.4;
 /// The widest band, relative to [`Param::scale`].
@@ -138,17 +153,18 @@ impl Param {
     }
 
     /// Whether the contract admits `value` as a draw of this parameter may land on it:
-    /// inside the range, and either exactly on a boundary the contract defines or no closer
-    /// to a boundary than the [`Param::resolution`] (where correct code may round either
-    /// way). Special values are admitted.
+    /// inside the range, and either on a boundary the contract defines (within
+    /// [`ON_BOUNDARY`], the f64 rounding of a derived quantity) or no closer to a boundary
+    /// than the [`Param::resolution`] (where correct code may round either way). Special
+    /// values are admitted.
     pub fn admits(&self, value: f64) -> bool {
         if !(value.is_finite() && (self.lo..=self.hi).contains(&value)) {
             return false;
         }
-        self.special.contains(&value)
+        self.is_special(value)
             || self.boundaries.iter().all(|b| {
                 let distance = (value - b.at).abs() / self.scale(b.at);
-                if distance == 0.0 {
+                if distance <= ON_BOUNDARY {
                     self.on_boundaries
                 } else {
                     distance >= self.resolution
@@ -156,14 +172,38 @@ impl Param {
             })
     }
 
-    /// The boundaries and special values inside the range, where a draw may land exactly.
-    pub fn exact_values(&self) -> impl Iterator<Item = f64> + '_ {
+    /// Whether `value` is one of the special values, up to the rounding of a quantity
+    /// derived in f64 from f32 inputs (a relative 1e-6: `cos θ` of a `w` whose `z` is
+    /// 1e-10 and whose length is 1 − 6e-8).
+    pub fn is_special(&self, value: f64) -> bool {
+        self.special
+            .iter()
+            .any(|s| (value - s).abs() <= 1e-6 * s.abs())
+    }
+
+    /// The boundaries inside the range that draws land on exactly (none when left open).
+    pub fn on_values(&self) -> impl Iterator<Item = f64> + '_ {
         self.boundaries
             .iter()
             .filter(|_| self.on_boundaries)
             .map(|b| b.at)
-            .chain(self.special.iter().copied())
             .filter(|v| (self.lo..=self.hi).contains(v))
+    }
+
+    /// The special values inside the range.
+    pub fn special_values(&self) -> impl Iterator<Item = f64> + '_ {
+        self.special
+            .iter()
+            .copied()
+            .filter(|v| (self.lo..=self.hi).contains(v))
+    }
+
+    /// The boundaries, drawn exactly, where the contract's answer jumps (those not
+    /// [`Boundary::continuous`]). Special values are not among them: they are inputs the
+    /// text names, not places where the answer changes.
+    pub fn jump_values(&self) -> impl Iterator<Item = f64> + '_ {
+        self.on_values()
+            .filter(|v| !self.boundaries.iter().any(|b| b.continuous && b.at == *v))
     }
 
     /// The boundary nearest to `value`, with its distance relative to [`Param::scale`].
@@ -192,14 +232,25 @@ impl<'s> Draw<'s> {
         self.s.next_f64()
     }
 
-    /// One value of `p`, biased toward its boundaries.
+    /// One value of `p`, biased toward its boundaries: a fixed share exactly on one of
+    /// them, another on one of its special values (so that adding special values takes
+    /// nothing from the boundaries), a share in the bands next to the boundaries, and the
+    /// rest spread over the range.
     pub fn value(&mut self, p: &Param) -> f64 {
         let pick = self.s.next_1d();
-        let exact: Vec<f64> = p.exact_values().collect();
-        if pick < EXACT && !exact.is_empty() {
-            return exact[self.index(exact.len())];
+        let on: Vec<f64> = p.on_values().collect();
+        let special: Vec<f64> = p.special_values().collect();
+        let mut from = 0.0;
+        for (values, share) in [(&on, EXACT), (&special, SPECIAL)] {
+            if values.is_empty() {
+                continue;
+            }
+            if pick < from + share {
+                return values[self.index(values.len())];
+            }
+            from += share;
         }
-        if pick < EXACT + NEAR && !p.boundaries.is_empty() {
+        if pick < from + NEAR && !p.boundaries.is_empty() {
             let b = p.boundaries[self.index(p.boundaries.len())].at;
             let band = p.resolution.log10()
                 + (WIDEST_BAND.log10() - p.resolution.log10()) * self.s.next_f64();
@@ -233,14 +284,41 @@ impl<'s> Draw<'s> {
     }
 
     /// A unit vector making cosine `cos` with `axis` (a unit vector), at a uniform
-    /// azimuth about it.
+    /// azimuth about it, or (one draw in [`AXIS_AZIMUTHS`]) at an azimuth along an axis of
+    /// the frame exactly, where `x` or `y` is 0 (`w = +x` on the horizon: `atan2`
+    /// quadrants, `cos φ = x / sin θ`).
     pub fn direction_at(&mut self, axis: Vec3, cos: f64) -> Vec3 {
         let cos = cos.clamp(-1.0, 1.0);
         let sin = (1.0 - cos * cos).max(0.0).sqrt();
-        let phi = std::f64::consts::TAU * self.s.next_f64();
+        let u = self.s.next_f64();
+        let (sin_phi, cos_phi) = if u < AXIS_AZIMUTHS {
+            [(0.0, 1.0), (1.0, 0.0), (0.0, -1.0), (-1.0, 0.0)]
+                [(u / AXIS_AZIMUTHS * 4.0) as usize % 4]
+        } else {
+            (std::f64::consts::TAU * u).sin_cos()
+        };
         let frame = crate::math::Frame::from_normal(axis);
-        let local = glam::DVec3::new(sin * phi.cos(), sin * phi.sin(), cos);
+        let local = glam::DVec3::new(sin * cos_phi, sin * sin_phi, cos);
         frame.to_world(local.as_vec3()).normalize()
+    }
+
+    /// A normal for a task whose normal is an input: a quarter of the time one of the six
+    /// axis directions (`−z` among them, where a tiny cosine to it is exact in f32 and a
+    /// flipped frame is needed), else uniform on the sphere.
+    pub fn normal(&mut self) -> Vec3 {
+        const AXES: [Vec3; 6] = [
+            Vec3::X,
+            Vec3::NEG_X,
+            Vec3::Y,
+            Vec3::NEG_Y,
+            Vec3::Z,
+            Vec3::NEG_Z,
+        ];
+        if self.unit() < 0.25 {
+            AXES[self.index(AXES.len())]
+        } else {
+            self.sphere()
+        }
     }
 
     /// A unit vector uniform on the sphere.
@@ -265,11 +343,13 @@ pub fn cos_between(a: Vec3, b: Vec3) -> f64 {
 const HORIZON: Boundary = Boundary {
     at: 0.0,
     what: "the horizon",
+    continuous: false,
 };
 /// The pole of a cosine (1).
 const NORMAL: Boundary = Boundary {
     at: 1.0,
     what: "the normal",
+    continuous: false,
 };
 
 /// Boundaries of a cosine over [−1, 1]: the horizon and both poles.
@@ -279,6 +359,7 @@ pub const COS_BOUNDARIES: &[Boundary] = &[
     Boundary {
         at: -1.0,
         what: "straight below",
+        continuous: false,
     },
 ];
 
@@ -301,6 +382,7 @@ pub const FLOORED_ROUGHNESS_BOUNDARIES: &[Boundary] = &[
     Boundary {
         at: crate::bsdf::MIN_ALPHA as f64,
         what: "the floor MIN_ALPHA that α is raised to",
+        continuous: false,
     },
 ];
 
@@ -308,28 +390,65 @@ pub const FLOORED_ROUGHNESS_BOUNDARIES: &[Boundary] = &[
 const MIRROR: Boundary = Boundary {
     at: 0.0,
     what: "a mirror (α → 0)",
+    continuous: false,
 };
 
+/// Cosines just above the horizon that neither the spread nor the bands (which stop 1e-7
+/// from a boundary) reach: down to the smallest normal and the smallest subnormal f32,
+/// where `cos⁴` (from 1e-12 on), then `cos²` underflow to 0 and `tan θ` overflows.
+pub const TINY_COSINES: [f64; 6] = [
+    1e-10,
+    1e-12,
+    1e-20,
+    1e-30,
+    f32::MIN_POSITIVE as f64,
+    1.401_298_464_324_817e-45,
+];
+
+/// The special values of a cosine over [0, 1]: [`TINY_COSINES`].
+pub const UPPER_COS_SPECIAL: &[f64] = &TINY_COSINES;
+
+/// The special values of a cosine over [−1, 1]: [`TINY_COSINES`] on both sides of the
+/// horizon.
+pub const COS_SPECIAL: &[f64] = &[
+    TINY_COSINES[0],
+    TINY_COSINES[1],
+    TINY_COSINES[2],
+    TINY_COSINES[3],
+    TINY_COSINES[4],
+    TINY_COSINES[5],
+    -TINY_COSINES[0],
+    -TINY_COSINES[1],
+    -TINY_COSINES[2],
+    -TINY_COSINES[3],
+    -TINY_COSINES[4],
+    -TINY_COSINES[5],
+];
+
 /// A cosine over [−1, 1] (a unit direction anywhere on the sphere) with the horizon and
-/// both poles as boundaries.
+/// both poles as boundaries, and [`COS_SPECIAL`] as special values.
 pub const fn cosine(
     function: &'static str,
     name: &'static str,
     covers: &'static [&'static str],
     value: fn(&Call) -> Option<f64>,
 ) -> Param {
-    Param::new(function, name, covers, value, -1.0, 1.0).boundaries(COS_BOUNDARIES)
+    Param::new(function, name, covers, value, -1.0, 1.0)
+        .boundaries(COS_BOUNDARIES)
+        .special(COS_SPECIAL)
 }
 
 /// A cosine over [0, 1] (a direction on the side the normal points to) with the horizon
-/// and the normal as boundaries.
+/// and the normal as boundaries, and [`UPPER_COS_SPECIAL`] as special values.
 pub const fn upper_cosine(
     function: &'static str,
     name: &'static str,
     covers: &'static [&'static str],
     value: fn(&Call) -> Option<f64>,
 ) -> Param {
-    Param::new(function, name, covers, value, 0.0, 1.0).boundaries(UPPER_COS_BOUNDARIES)
+    Param::new(function, name, covers, value, 0.0, 1.0)
+        .boundaries(UPPER_COS_BOUNDARIES)
+        .special(UPPER_COS_SPECIAL)
 }
 
 /// A roughness over [0, 1]: 0 (a mirror, raised to `MIN_ALPHA` by the reference) and 1
@@ -372,12 +491,14 @@ pub const fn anisotropy(
         .boundaries(&[Boundary {
             at: 1.0,
             what: "isotropy (αx = αy)",
+            continuous: false,
         }])
         .resolution(1e-6)
 }
 
 /// The length of a vector the text lets be any non-zero length: [1e-2, 1e2], log-spread,
-/// with unit length named.
+/// with unit length and 2 named, and lengths within 1e-3 of 1 (where code that skips a
+/// normalisation "because it is nearly unit" is off by that much).
 pub const fn length(
     function: &'static str,
     name: &'static str,
@@ -389,7 +510,7 @@ pub const fn length(
             from: 1e-2,
             to: 1e2,
         })
-        .special(&[1.0])
+        .special(&[1.0, 2.0, 1.0 - 1e-3, 1.0 - 1e-4, 1.0 + 1e-4, 1.0 + 1e-3])
         .resolution(1e-6)
 }
 
@@ -419,6 +540,7 @@ pub const fn exponent(
         .boundaries(&[Boundary {
             at: 0.0,
             what: "an exponent of 0 (the clamped 0^0)",
+            continuous: false,
         }])
         .resolution(1e-6)
         .open()
@@ -449,6 +571,7 @@ macro_rules! microfacet_domain {
             .boundaries(&[$crate::grade::domain::Boundary {
                 at: -1.0,
                 what: "wo = −wi (no half vector)",
+                continuous: false,
             }]),
             $crate::grade::domain::floored_roughness($function, "alpha_x", &["alpha_x"], |c| {
                 $of(c).map(|x| x.2 as f64)
@@ -522,6 +645,7 @@ mod tests {
         const EDGE: &[Boundary] = &[Boundary {
             at: 0.0,
             what: "the edge",
+            continuous: false,
         }];
         let p = Param::new("f", "x", &["x"], |_| None, -1.0, 1.0)
             .boundaries(EDGE)

@@ -38,6 +38,26 @@ impl Output {
         }
     }
 
+    /// The largest magnitude of a number in the output (NaNs left out; 0 for none).
+    pub fn magnitude(&self) -> f64 {
+        match self {
+            Output::Nothing => 0.0,
+            Output::Number(x) => x.abs(),
+            Output::Numbers(v) => v.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
+            Output::Record(m) => m.values().fold(0.0, |a: f64, o| a.max(o.magnitude())),
+        }
+    }
+
+    /// True when some number in the output is NaN.
+    pub fn has_nan(&self) -> bool {
+        match self {
+            Output::Nothing => false,
+            Output::Number(x) => x.is_nan(),
+            Output::Numbers(v) => v.iter().any(|x| x.is_nan()),
+            Output::Record(m) => m.values().any(Output::has_nan),
+        }
+    }
+
     /// The field `name` of a record.
     pub fn field(&self, name: &str) -> Option<&Output> {
         match self {

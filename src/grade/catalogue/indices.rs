@@ -50,12 +50,14 @@ pub const fn critical(
 pub const EQUAL_INDICES: &[Boundary] = &[Boundary {
     at: 1.0,
     what: "equal indices",
+    continuous: false,
 }];
 
 /// The boundary of `sin²θt` at 1: the critical angle, past which all light reflects.
 pub const CRITICAL_ANGLE: &[Boundary] = &[Boundary {
     at: 1.0,
     what: "the critical angle (total internal reflection past it)",
+    continuous: false,
 }];
 
 /// `sin²θt` by Snell's law for incident cosine `cos_i` and index ratio `η_i/η_t`.

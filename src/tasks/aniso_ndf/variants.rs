@@ -5,6 +5,7 @@
 use crate::support::patch::{Variant, variant};
 use crate::support::variants::Naive;
 use glam::Vec3;
+use pbrlab::bsdf::MIN_ALPHA;
 use pbrlab::stability::Verdict;
 use pbrlab::worksheet::TaskId;
 use pbrlab_solutions as sol;
@@ -14,6 +15,28 @@ use std::f32::consts::PI;
 pub fn wrong() -> Vec<Variant> {
     use TaskId::*;
     vec![
+        variant(
+            "polar form through tan²θ, NaN where cos²θ underflows",
+            AnisoNdf,
+            |p| {
+                p.aniso_ndf = Some(|h, ax, ay| {
+                    if h.z <= 0.0 {
+                        return 0.0;
+                    }
+                    let (ax, ay) = (ax.max(1e-4), ay.max(1e-4));
+                    let c2 = h.z * h.z;
+                    let s2 = (1.0 - c2).max(0.0);
+                    let tan2 = s2 / c2;
+                    let (cos2_phi, sin2_phi) = if s2 == 0.0 {
+                        (1.0, 0.0)
+                    } else {
+                        (h.x * h.x / s2, h.y * h.y / s2)
+                    };
+                    let e = tan2 * (cos2_phi / (ax * ax) + sin2_phi / (ay * ay));
+                    1.0 / (PI * ax * ay * c2 * c2 * (1.0 + e) * (1.0 + e))
+                })
+            },
+        ),
         variant("swapped anisotropic roughnesses", AnisoNdf, |p| {
             p.aniso_ndf = Some(|h, ax, ay| ggx(h, ay, ax))
         }),
@@ -59,17 +82,39 @@ pub fn different() -> Vec<Variant> {
                 let (ax, ay) = (ax.max(1e-4), ay.max(1e-4));
                 let c2 = h.z * h.z;
                 let s2 = (1.0 - c2).max(0.0);
-                let tan2 = s2 / c2;
                 let (cos2_phi, sin2_phi) = if s2 == 0.0 {
                     (1.0, 0.0)
                 } else {
                     (h.x * h.x / s2, h.y * h.y / s2)
                 };
-                let e = tan2 * (cos2_phi / (ax * ax) + sin2_phi / (ay * ay));
-                1.0 / (PI * ax * ay * c2 * c2 * (1.0 + e) * (1.0 + e))
+                // cos²θ (1 + tan²θ (…)) without tan θ, which overflows at grazing.
+                let q = c2 + s2 * (cos2_phi / (ax * ax) + sin2_phi / (ay * ay));
+                1.0 / (PI * ax * ay * q * q)
             })
         },
     )]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `aniso_ndf` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("anisotropic GGX in f64 throughout", AnisoNdf, |p| {
+        p.aniso_ndf = Some(|h, ax, ay| {
+            if h.z <= 0.0 {
+                return 0.0;
+            }
+            let h = h.as_dvec3();
+            let ax = f64::from(ax.abs().max(MIN_ALPHA));
+            let ay = f64::from(ay.abs().max(MIN_ALPHA));
+            let s = (h.x / ax).powi(2) + (h.y / ay).powi(2) + h.z * h.z;
+            (1.0 / (std::f64::consts::PI * ax * ay * s * s)) as f32
+        })
+    })]
+
 }
 
 /// Naive implementations of `aniso_ndf` (the textbook formula without its guards), each with

@@ -61,8 +61,7 @@ fn of(c: &Call) -> Option<(Vec3, f32)> {
 pub const DOMAIN: &[Param] = &[
     cosine("beckmann_ndf", "cos θh", &["h"], |c| {
         of(c).map(|x| cos_z(x.0))
-    })
-    .special(&[1e-12]),
+    }),
     floored_roughness("beckmann_ndf", "alpha", &["alpha"], |c| {
         of(c).map(|x| x.1 as f64)
     }),

@@ -5,6 +5,7 @@
 use crate::support::patch::{Variant, variant};
 use crate::support::variants::Naive;
 use glam::Vec3;
+use pbrlab::bsdf::MIN_ALPHA;
 use pbrlab::stability::Verdict;
 use pbrlab::worksheet::TaskId;
 use std::f32::consts::{FRAC_1_PI, PI};
@@ -56,10 +57,37 @@ pub fn different() -> Vec<Variant> {
                     return 0.0;
                 }
                 let c2 = c * c;
-                ((c2 - 1.0) / (alpha * alpha * c2)).exp() / (PI * alpha * alpha * c2 * c2)
+                let falloff = ((c2 - 1.0) / (alpha * alpha * c2)).exp();
+                if falloff == 0.0 {
+                    // Where the exponential underflows, the denominator may too (0/0).
+                    return 0.0;
+                }
+                falloff / (PI * alpha * alpha * c2 * c2)
             })
         },
     )]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `beckmann_ndf` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("Beckmann in f64 throughout", BeckmannNdf, |p| {
+        p.beckmann_ndf = Some(|h, alpha| {
+            let c = f64::from(h.z).min(1.0);
+            if c <= 0.0 {
+                return 0.0;
+            }
+            let a2 = f64::from(alpha.abs().max(MIN_ALPHA)).powi(2);
+            let c2 = c * c;
+            let tan2 = (1.0 - c2) / c2;
+            ((-tan2 / a2).exp() / (std::f64::consts::PI * a2 * c2 * c2)) as f32
+        })
+    })]
+
 }
 
 /// Naive implementations of `beckmann_ndf` (the textbook formula without its guards), each with

@@ -4,13 +4,12 @@
 
 use crate::support::patch::{Patch, Variant, variant};
 use crate::support::variants::Naive;
-use crate::support::warps::cosine_direction;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use pbrlab::bsdf::PlausibilityReport;
 use pbrlab::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use pbrlab::worksheet::{TaskId, Tasks};
 use pbrlab_solutions as sol;
-use std::f32::consts::{FRAC_1_PI, PI};
+use std::f32::consts::FRAC_1_PI;
 
 /// Known-wrong implementations of `brdf_check`: each must fail this task and no other.
 pub fn wrong() -> Vec<Variant> {
@@ -77,9 +76,9 @@ pub fn wrong() -> Vec<Variant> {
 pub fn different() -> Vec<Variant> {
     use TaskId::*;
     vec![variant(
-        "plausibility with cosine-weighted albedo samples at its own angles",
+        "plausibility with stratified uniform albedo samples at its own angles",
         BrdfCheck,
-        |p| p.brdf_check = Some(cosine_weighted_check),
+        |p| p.brdf_check = Some(stratified_check),
     )]
 }
 
@@ -122,7 +121,7 @@ fn albedo_check(
     report
 }
 
-fn cosine_weighted_check(
+fn stratified_check(
     t: &Patch,
     brdf: &dyn Fn(Vec3, Vec3) -> f32,
     sampler: &mut Sampler,
@@ -134,29 +133,32 @@ fn cosine_weighted_check(
         max_albedo: 0.0,
         worst_wi: Vec3::Z,
     };
+    // A jittered √n × √n grid of uniform hemisphere samples, as the text suggests.
+    let side = (samples as f64).sqrt().floor().max(1.0) as usize;
     for deg in [0.0f32, 20.0, 40.0, 60.0, 80.0, 88.0, 89.5, 89.95] {
         let (s, c) = deg.to_radians().sin_cos();
         let wi = Vec3::new(0.0, s, c);
         let mut sum = 0.0f64;
-        for _ in 0..samples {
-            let wo = cosine_direction(sampler.next_2d());
-            if wo.z <= 0.0 {
-                continue;
-            }
+        for k in 0..side * side {
+            let u = sampler.next_2d();
+            let u = Vec2::new(
+                ((k % side) as f32 + u.x) / side as f32,
+                ((k / side) as f32 + u.y) / side as f32,
+            )
+            .min(Vec2::splat(1.0 - f32::EPSILON));
+            let wo = uniform_hemisphere(u);
             let f = brdf(wi, wo);
             // A NaN reaches the report (f32::min would skip it).
             if f.is_nan() || f < report.min_value {
                 report.min_value = f;
             }
-            // f cos / (cos/π) = π f
-            sum += (PI * f) as f64;
+            sum += (f * wo.z / uniform_hemisphere_pdf()) as f64;
         }
-        let albedo = (sum / samples as f64) as f32;
+        let albedo = (sum / (side * side) as f64) as f32;
         if albedo.is_nan() || albedo > report.max_albedo {
             report.max_albedo = albedo;
             report.worst_wi = wi;
         }
     }
-    let _ = FRAC_1_PI;
     report
 }

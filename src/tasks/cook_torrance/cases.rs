@@ -50,6 +50,15 @@ pub fn fixed() -> Vec<CaseInput> {
         )
         .note("with G1·G1 the value stays finite at grazing (→ 0.00857)"),
         ct(
+            "text: subnormal cos θo, grazing wi",
+            Vec3::new(1.0, 0.0, 1e-45),
+            at_degrees(-87.0),
+            0.3,
+            0.3,
+            f0,
+        )
+        .note("4 cos θo cos θi underflows to 0: divide each G1 by its own cosine"),
+        ct(
             "coloured f0",
             at_degrees(20.0),
             at_degrees(-50.0),
@@ -121,7 +130,11 @@ const PAIR: [Param; 6] = crate::microfacet_domain!("cook_torrance", of);
 pub const DOMAIN: &[Param] = &[
     PAIR[0],
     PAIR[1],
-    PAIR[2],
+    // Open: with both directions above the horizon, `wo = −wi` is only approached, and
+    // within the guard on `|wo + wi|²` the text accepts 0 as well as the formula's value
+    // (h = n in exact arithmetic). The stability cases `cook_torrance/opposite_*` judge the
+    // guard; `wo = −wi` with one direction below the horizon is 0 by the horizon rule.
+    PAIR[2].open(),
     PAIR[3],
     PAIR[4],
     PAIR[5],

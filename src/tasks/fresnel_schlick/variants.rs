@@ -63,6 +63,40 @@ pub fn different() -> Vec<Variant> {
             })
         },
     )]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `fresnel_schlick` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("Schlick in f64 throughout", FresnelSchlick, |p| {
+        p.schlick_r0 = Some(|eta_i, eta_t| {
+            let (ei, et) = (f64::from(eta_i), f64::from(eta_t));
+            ((ei - et) / (ei + et)).powi(2) as f32
+        });
+        p.fresnel_schlick = Some(|_, cos, eta_i, eta_t| {
+            if eta_i == eta_t {
+                return 0.0;
+            }
+            let (ei, et) = (f64::from(eta_i), f64::from(eta_t));
+            let c = f64::from(cos.abs()).min(1.0);
+            let c = if ei > et {
+                let sin2_t = (ei / et).powi(2) * (1.0 - c * c).max(0.0);
+                if sin2_t >= 1.0 {
+                    return 1.0;
+                }
+                (1.0 - sin2_t).sqrt()
+            } else {
+                c
+            };
+            let r0 = ((ei - et) / (ei + et)).powi(2);
+            (r0 + (1.0 - r0) * (1.0 - c).powi(5)) as f32
+        });
+    })]
+
 }
 
 /// Naive implementations of `fresnel_schlick` (the textbook formula without its guards), each with

@@ -80,17 +80,26 @@ fn of(c: &Call) -> Option<(Vec3, Vec3, Vec3, &KajiyaKayParams)> {
 }
 
 /// The boundaries of a cosine to the fibre: along it, either way (`sin θ = 0`, where the
-/// worksheet's form divides by 0 and a rounded `t·w` may be 1.0000001).
+/// worksheet's form divides by 0 and a rounded `t·w` may be 1.0000001). The answer is
+/// continuous there but steep: `sin θ = √(1 − c²)` turns a cosine 1e-7 from ±1 into
+/// 4.5e-4, below what an f32 dot product of vectors not quite unit resolves, hence
+/// [`FIBRE_RESOLUTION`].
 const ALONG_THE_FIBRE: &[Boundary] = &[
     Boundary {
         at: 1.0,
         what: "along the fibre",
+        continuous: true,
     },
     Boundary {
         at: -1.0,
         what: "along the fibre, backwards",
+        continuous: true,
     },
 ];
+
+/// How near (in cosine) to the fibre a drawn direction may lie without lying along it:
+/// 1e-5 in the cosine is 4.5e-3 in `sin θ`, which f32 resolves.
+const FIBRE_RESOLUTION: f64 = 1e-5;
 
 /// The declared domain of `kajiya_kay(wo, wi, tangent, params)`: unit directions on the
 /// whole sphere, pointing away from the fibre, a unit tangent; non-negative and finite for
@@ -105,7 +114,8 @@ pub const DOMAIN: &[Param] = &[
         -1.0,
         1.0,
     )
-    .boundaries(ALONG_THE_FIBRE),
+    .boundaries(ALONG_THE_FIBRE)
+    .resolution(FIBRE_RESOLUTION),
     Param::new(
         "kajiya_kay",
         "t·wo",
@@ -114,7 +124,8 @@ pub const DOMAIN: &[Param] = &[
         -1.0,
         1.0,
     )
-    .boundaries(ALONG_THE_FIBRE),
+    .boundaries(ALONG_THE_FIBRE)
+    .resolution(FIBRE_RESOLUTION),
     Param::new(
         "kajiya_kay",
         "t·wo + t·wi",
@@ -126,6 +137,7 @@ pub const DOMAIN: &[Param] = &[
     .boundaries(&[Boundary {
         at: 0.0,
         what: "the reflection cone (t·wo = −t·wi)",
+        continuous: true,
     }]),
     channel("kajiya_kay", "largest channel of kd", &["params.kd"], |c| {
         of(c).map(|x| x.3.kd.max_element() as f64)
@@ -146,7 +158,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);
     (0..count)
         .map(|i| {
-            let tangent = d.sphere();
+            let tangent = d.normal();
             let cos_i = d.value(&DOMAIN[0]);
             let wi = d.direction_at(tangent, cos_i);
             // One case in four aims wo at the reflection cone.

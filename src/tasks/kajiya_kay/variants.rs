@@ -64,6 +64,35 @@ pub fn different() -> Vec<Variant> {
             })
         },
     )]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `kajiya_kay` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![
+        variant("Kajiya-Kay in f64 throughout", KajiyaKay, |p| {
+            p.kajiya_kay = Some(|wo, wi, t, params| {
+                let (wo, wi, t) = (wo.as_dvec3(), wi.as_dvec3(), t.as_dvec3());
+                let (ci, co) = (t.dot(wi).clamp(-1.0, 1.0), t.dot(wo).clamp(-1.0, 1.0));
+                let (si, so) = ((1.0 - ci * ci).sqrt(), (1.0 - co * co).sqrt());
+                let cone = (si * so - ci * co).max(0.0);
+                let (kd, ks) = (params.kd.as_dvec3(), params.ks.as_dvec3());
+                (kd * si + ks * cone.powf(f64::from(params.exponent))).as_vec3()
+            })
+        }),
+        variant("Kajiya-Kay with sines from cross products", KajiyaKay, |p| {
+            p.kajiya_kay = Some(|wo, wi, t, params| {
+                let (si, so) = (t.cross(wi).length(), t.cross(wo).length());
+                let cone = (si * so - t.dot(wi) * t.dot(wo)).max(0.0);
+                params.kd * si + params.ks * cone.powf(params.exponent)
+            })
+        }),
+    ]
+
 }
 
 /// Naive implementations of `kajiya_kay` (the textbook formula without its guards), each with

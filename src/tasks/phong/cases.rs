@@ -158,10 +158,12 @@ pub const DOMAIN: &[Param] = &[
         Boundary {
             at: 0.0,
             what: "the edge of the lobe (clamp r·wo before powf)",
+            continuous: false,
         },
         Boundary {
             at: 1.0,
             what: "the peak of the lobe",
+            continuous: false,
         },
     ]),
     channel("phong", "largest channel of kd", &["params.kd"], |c| {

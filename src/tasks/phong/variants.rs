@@ -173,6 +173,30 @@ pub fn different() -> Vec<Variant> {
             });
         },
     )]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `phong` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("Phong in f64 throughout", Phong, |p| {
+        p.phong = Some(|_, wo, wi, params| {
+            if wo.z <= 0.0 || wi.z <= 0.0 {
+                return Vec3::ZERO;
+            }
+            let (wo, wi) = (wo.as_dvec3(), wi.as_dvec3());
+            let mirror = glam::DVec3::new(-wi.x, -wi.y, wi.z);
+            let e = f64::from(params.exponent);
+            let lobe = mirror.dot(wo).max(0.0).powf(e);
+            let pi = std::f64::consts::PI;
+            (params.kd.as_dvec3() / pi + params.ks.as_dvec3() * ((e + 2.0) / (2.0 * pi) * lobe))
+                .as_vec3()
+        })
+    })]
+
 }
 
 /// Naive implementations of `phong` (the textbook formula without its guards), each with

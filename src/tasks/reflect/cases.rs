@@ -57,8 +57,7 @@ pub const DOMAIN: &[Param] = &[
     length("reflect", "|n|", &["n"], |c| match c {
         Call::Reflect { n, .. } => Some(n.length() as f64),
         _ => None,
-    })
-    .special(&[1.0, 2.0]),
+    }),
     length("reflect", "|wo|", &["wo"], |c| match c {
         Call::Reflect { wo, .. } => Some(wo.length() as f64),
         _ => None,
@@ -69,7 +68,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
     let mut d = Draw::new(s);
     (0..count)
         .map(|_| {
-            let n = d.sphere();
+            let n = d.normal();
             let cos = d.value(&DOMAIN[0]);
             let wo = d.direction_at(n, cos);
             let n = n * d.value(&DOMAIN[1]) as f32;

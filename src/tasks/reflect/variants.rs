@@ -32,6 +32,22 @@ pub fn different() -> Vec<Variant> {
             2.0 * wo.dot(n) * n - wo
         })
     })]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `reflect` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("reflect in f64 throughout", Reflect, |p| {
+        p.reflect = Some(|wo, n| {
+            let (wo, n) = (wo.as_dvec3(), n.as_dvec3());
+            (n * (2.0 * wo.dot(n) / n.length_squared()) - wo).as_vec3()
+        })
+    })]
+
 }
 
 /// Naive implementations of `reflect` (the textbook formula without its guards), each with

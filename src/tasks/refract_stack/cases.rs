@@ -171,8 +171,7 @@ pub const DOMAIN: &[Param] = &[
     }),
     length("refract", "|n|", &["n"], |c| {
         refract_of(c).map(|x| x.1.length() as f64)
-    })
-    .special(&[1.0, 2.0]),
+    }),
     index_ratio("refract", "η_i/η_t", &["eta_i", "eta_t"], |c| {
         refract_of(c).map(|x| x.2 as f64 / x.3 as f64)
     }),
@@ -199,6 +198,7 @@ pub const DOMAIN: &[Param] = &[
     .boundaries(&[Boundary {
         at: 0.0,
         what: "normal incidence",
+        continuous: false,
     }]),
     critical(
         "refract_stack",
@@ -251,7 +251,7 @@ fn random_refract(d: &mut Draw, aim: bool) -> CaseInput {
     } else {
         d.value(&DOMAIN[0])
     };
-    let n = d.sphere();
+    let n = d.normal();
     let wi = d.direction_at(n, cos);
     let n = n * d.value(&DOMAIN[1]) as f32;
     let case = CaseInput::new(

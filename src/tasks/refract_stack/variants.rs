@@ -130,6 +130,35 @@ pub fn different() -> Vec<Variant> {
             },
         ),
     ]
+    .into_iter()
+    .chain(other_arithmetic())
+    .collect()
+}
+
+/// Correct implementations of `refract_stack` in other arithmetic (f64, other algebraic forms):
+/// each gets full marks, whatever its rounding.
+fn other_arithmetic() -> Vec<Variant> {
+    use TaskId::*;
+    vec![variant("refraction in f64 throughout", RefractStack, |p| {
+        p.refract = Some(|wi, n, eta_i, eta_t| {
+            let wi = wi.as_dvec3().normalize();
+            let mut n = n.as_dvec3().normalize();
+            let mut cos_i = wi.dot(n);
+            if cos_i < 0.0 {
+                n = -n;
+                cos_i = -cos_i;
+            }
+            let cos_i = cos_i.min(1.0);
+            let eta = f64::from(eta_i) / f64::from(eta_t);
+            let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
+            if sin2_t >= 1.0 {
+                return None;
+            }
+            let cos_t = (1.0 - sin2_t).sqrt();
+            Some((-eta * wi + (eta * cos_i - cos_t) * n).normalize().as_vec3())
+        })
+    })]
+
 }
 
 /// Naive implementations of `refract_stack` (the textbook formula without its guards), each with
