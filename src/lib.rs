@@ -71,6 +71,7 @@ pub mod converge;
 pub mod entropy;
 pub mod grade;
 pub mod handout;
+pub mod html_escape;
 pub mod implementation;
 pub mod panics;
 pub mod similarity;

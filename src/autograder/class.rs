@@ -727,7 +727,7 @@ pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
     if graded.len() < results.len() {
         s += "\n";
     }
-    s += "| entry | mean | max | passed | failed | compile error | crashed | not attempted | most common failing check |\n";
+    s += "| entry | mean | max | passed | partly right | failed | compile error | crashed | not attempted | most common failing check |\n";
     s += "|---|---|---|---|---|---|---|---|---|\n";
     for e in entries {
         let outcomes: Vec<_> = graded.iter().filter_map(|g| g.task(e)).collect();
@@ -738,7 +738,10 @@ pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
         let count =
             |f: &dyn Fn(&TaskStatus) -> bool| outcomes.iter().filter(|o| f(&o.status)).count();
         let mut failing: BTreeMap<&str, usize> = BTreeMap::new();
-        for o in outcomes.iter().filter(|o| o.status == TaskStatus::Failed) {
+        for o in outcomes
+            .iter()
+            .filter(|o| matches!(o.status, TaskStatus::Failed | TaskStatus::Partial))
+        {
             for c in o.checks.iter().filter(|c| !c.passed) {
                 *failing.entry(c.name.as_str()).or_default() += 1;
             }
@@ -749,9 +752,10 @@ pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
             .map_or_else(|| "-".to_string(), |(name, n)| format!("{name} ({n})"));
         let _ = writeln!(
             s,
-            "| {e} | {mean:.2} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {e} | {mean:.2} | {} | {} | {} | {} | {} | {} | {} | {} |",
             outcomes[0].max_points,
             count(&|st| *st == TaskStatus::Passed),
+            count(&|st| *st == TaskStatus::Partial),
             count(&|st| *st == TaskStatus::Failed),
             count(&|st| matches!(st, TaskStatus::CompileError { .. })),
             count(&|st| matches!(st, TaskStatus::Crashed { .. })),
@@ -862,7 +866,10 @@ mod tests {
             text.contains("| reflect | 5.00 | 5 | 1 | 0 | 0 |"),
             "{text}"
         );
-        assert!(text.contains("| mis | 0.00 | 5 | 0 | 0 | 1 |"), "{text}");
+        assert!(
+            text.contains("| mis | 0.00 | 5 | 0 | 0 | 0 | 1 |"),
+            "{text}"
+        );
         assert!(
             text.contains("cy not graded: the submission did not build"),
             "{text}"

@@ -26,8 +26,8 @@ pub struct Config {
     pub memory_limit_mb: u64,
     /// Tasks graded at once (Gradescope's default container has half a CPU).
     pub jobs: usize,
-    /// How partly right checks are credited (`{"policy": "per_case"}`, `all_or_nothing`,
-    /// or `{"policy": "threshold", "fraction": 0.9}`).
+    /// How partly right checks are credited (`{"policy": "per_region"}`, `per_case`,
+    /// `all_or_nothing`, or `{"policy": "threshold", "fraction": 0.9}`).
     #[serde(default)]
     pub credit: Credit,
     /// How much of a failing case a student sees (`"full"`, `"actual"`: input and output,
@@ -47,9 +47,9 @@ impl Config {
         Self {
             seed: crate::grade::runner::DEFAULT_SEED,
             hidden_seed,
-            task_timeout: 30.0,
+            task_timeout: crate::grade::runner::DEFAULT_TASK_TIMEOUT_SECONDS,
             deadline: 540.0,
-            memory_limit_mb: 4096,
+            memory_limit_mb: crate::grade::runner::DEFAULT_MEMORY_LIMIT_MIB,
             jobs: 1,
             credit: Credit::default(),
             feedback: Feedback::default(),

@@ -42,18 +42,20 @@ pub struct Args {
     #[arg(long)]
     pub hidden_seed_file: Option<PathBuf>,
     /// Time limit per task, in seconds.
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(long, default_value_t = crate::grade::runner::DEFAULT_TASK_TIMEOUT_SECONDS)]
     pub timeout: f64,
     /// Memory limit per task, in MiB.
-    #[arg(long, default_value_t = 4096)]
+    #[arg(long, default_value_t = crate::grade::runner::DEFAULT_MEMORY_LIMIT_MIB)]
     pub memory_limit_mb: u64,
     /// Tasks graded at once (default: the number of cores).
     #[arg(long)]
     pub jobs: Option<usize>,
-    /// How a partly right check is credited: per-case (the fraction of its cases that
-    /// pass), all-or-nothing, or threshold:F (all when a fraction F of the cases pass).
-    /// Statistical checks are all or nothing under any policy.
-    #[arg(long, default_value = "per-case")]
+    /// How a partly right check is credited: per-region (a values check's share split
+    /// equally over the regions of the domain its cases lie in, each earned when all its
+    /// cases pass), per-case (the fraction of its cases that pass), all-or-nothing, or
+    /// threshold:F (all when a fraction F of the cases pass). Statistical checks are all
+    /// or nothing under any policy.
+    #[arg(long, default_value = "per-region")]
     pub credit: Credit,
     /// Show every task and scene in the table and every line of what failed (by default the
     /// table fits an 80×24 terminal: tasks not attempted and scenes waiting are a line

@@ -26,14 +26,14 @@ pub struct Args {
     #[arg(long)]
     pub jobs: Option<usize>,
     /// Time limit per task, in seconds.
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(long, default_value_t = crate::grade::runner::DEFAULT_TASK_TIMEOUT_SECONDS)]
     pub timeout: f64,
-    /// How a partly right check is credited: per-case, all-or-nothing or threshold:F
-    /// (see `pbrlab grade --help`).
-    #[arg(long, default_value = "per-case")]
+    /// How a partly right check is credited: per-region, per-case, all-or-nothing or
+    /// threshold:F (see `pbrlab grade --help`).
+    #[arg(long, default_value = "per-region")]
     pub credit: Credit,
     /// Memory limit per task, in MiB.
-    #[arg(long, default_value_t = 4096)]
+    #[arg(long, default_value_t = crate::grade::runner::DEFAULT_MEMORY_LIMIT_MIB)]
     pub memory_limit_mb: u64,
     /// Grade every submission again (a changed grader, a new hidden seed, late files):
     /// the replaced results go to OUT/history/<time>/, and OUT/changes.md lists, per

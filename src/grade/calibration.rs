@@ -61,7 +61,8 @@ pub struct Calibration {
     pub tasks: Vec<TaskRates>,
 }
 
-/// Grades with seeds `options.seed`, `options.seed + 1`, … `runs` times.
+/// Grades with seeds `options.seed`, `options.seed + 1`, … `runs` times, and hidden seeds
+/// `options.hidden_seed`, `options.hidden_seed + 1`, … where one is given.
 pub fn repeat(
     options: &GradeOptions,
     launcher: &Launcher,
@@ -71,6 +72,7 @@ pub fn repeat(
     for k in 0..runs {
         let seeded = GradeOptions {
             seed: options.seed.wrapping_add(k as u64),
+            hidden_seed: options.hidden_seed.map(|h| h.wrapping_add(k as u64)),
             ..options.clone()
         };
         let report = grade(&seeded, launcher)?;

@@ -21,6 +21,12 @@ pub struct ValueCase {
     /// The reference's output: finite, except where the rule judges a verdict (a
     /// reciprocity gap of ∞, a plausibility report with NaN, for a BRDF that returns NaN).
     pub expected: Output,
+    /// The region of the task's declared domain the case lies in (`cos θ of w: on the
+    /// horizon`, `alpha = 0`, `the interior`, `the worked cases`,
+    /// [`crate::grade::catalogue::region`]): a values check's credit is split over its
+    /// regions ([`crate::grade::credit::Credit::PerRegion`]). Empty where not declared.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub region: String,
 }
 
 /// How a student's output is compared with the expected one.
@@ -300,6 +306,7 @@ mod tests {
             rule,
             note: None,
             expected,
+            region: String::new(),
         }
     }
 
@@ -348,6 +355,7 @@ mod tests {
             },
             note: None,
             expected: Output::Numbers(vec![1.0; 4]),
+            region: String::new(),
         };
         assert!(
             c.judge(&Output::Numbers(vec![1.0, 1.001, 0.999, 1.0]))

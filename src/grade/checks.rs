@@ -622,7 +622,8 @@ fn estimator_check(
 /// stopped at other tasks' stubs (possible only without the reference, where the student's
 /// own dependencies run) needs those tasks first. Otherwise the points are split by check
 /// weight, each check earning its `credit` (set by the course's policy,
-/// [`super::credit::Credit::apply`]).
+/// [`super::credit::Credit::apply`]); a task with a failing check that keeps at least
+/// [`PASS_SHARE`] of its points is [`TaskStatus::Partial`].
 pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
     let points = task.info().points as f64;
     if checks.is_empty() {
@@ -648,7 +649,13 @@ pub fn score(task: TaskId, checks: &[CheckResult]) -> (TaskStatus, f64) {
     let earned = super::verdict::total(checks.iter().map(|c| c.weight * c.credit));
     if checks.iter().all(|c| c.passed) {
         (TaskStatus::Passed, points)
+    } else if earned >= PASS_SHARE * total {
+        (TaskStatus::Partial, points * earned / total)
     } else {
         (TaskStatus::Failed, points * earned / total)
     }
 }
+
+/// The share of its points a task with a failing check must keep to be
+/// [`TaskStatus::Partial`] rather than failed: the scenes that need it are then graded.
+pub const PASS_SHARE: f64 = 0.9;

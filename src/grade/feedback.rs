@@ -72,7 +72,8 @@ pub fn redact(report: &GradeReport, level: Feedback) -> GradeReport {
 
 /// One check at `level` (not [`Feedback::Full`]): a summary from its counts alone; at
 /// [`Feedback::Actual`] the student-safe form of each failing case it kept, for a visible
-/// check; no worst case, p-values or detail (histograms, estimates, pictures).
+/// check; no worst case, p-values or detail (histograms, estimates, pictures); its regions'
+/// counts without their names.
 fn redact_check(check: &mut CheckResult, level: Feedback) {
     check.summary = if check.passed {
         format!("{}/{} cases pass", check.total, check.total)
@@ -95,6 +96,12 @@ fn redact_check(check: &mut CheckResult, level: Feedback) {
     check.worst = None;
     check.p_values.clear();
     check.detail = None;
+    // A region is named by the values it lies at (`|n| = 0.999`), which may be a case's
+    // input or answer: below `full`, regions keep their counts (the credit's split) and
+    // lose their names.
+    for (k, region) in check.regions.iter_mut().enumerate() {
+        region.name = format!("region {}", k + 1);
+    }
 }
 
 #[cfg(test)]

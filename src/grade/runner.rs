@@ -60,7 +60,7 @@ impl Default for GradeOptions {
             implementation: ImplChoice::Student,
             seed: DEFAULT_SEED,
             hidden_seed: None,
-            timeout: Duration::from_secs(30),
+            timeout: Duration::from_secs_f64(DEFAULT_TASK_TIMEOUT_SECONDS),
             memory_limit: DEFAULT_MEMORY_LIMIT,
             jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
             renders: true,
@@ -110,8 +110,15 @@ fn hidden_cases(_task: TaskId, _seed: u64) -> anyhow::Result<Vec<super::case::Va
     bail!("hidden cases are computed by the reference, which this build does not have")
 }
 
-/// The address-space limit of a worker unless told otherwise: 4 GiB.
-pub const DEFAULT_MEMORY_LIMIT: u64 = 4 << 30;
+/// The address-space limit of a worker unless told otherwise, in MiB: the one home of the
+/// default that `grade`, `grade-class` and the packages' settings derive from.
+pub const DEFAULT_MEMORY_LIMIT_MIB: u64 = 4096;
+
+/// [`DEFAULT_MEMORY_LIMIT_MIB`] in bytes.
+pub const DEFAULT_MEMORY_LIMIT: u64 = DEFAULT_MEMORY_LIMIT_MIB << 20;
+
+/// The time limit per task unless told otherwise, in seconds (one home, as above).
+pub const DEFAULT_TASK_TIMEOUT_SECONDS: f64 = 30.0;
 
 /// Runs `jobs` with `options.jobs` workers at a time and `options.timeout` each.
 pub fn run_all(

@@ -7,14 +7,16 @@ use crate::task_set::TaskSet;
 use crate::worksheet::TaskId;
 
 /// The tasks of `needs` that have not passed in `graded` (a task that was not graded counts
-/// as not passed). Empty when the scene's render check may be awarded.
+/// as not passed; one that is [`TaskStatus::Partial`] counts as passed). Empty when the
+/// scene's render check may be awarded.
 pub fn missing_tasks(needs: TaskSet, graded: &[TaskOutcome]) -> Vec<TaskId> {
     needs
         .iter()
         .filter(|task| {
-            !graded
-                .iter()
-                .any(|t| t.task == task.name() && t.status == TaskStatus::Passed)
+            !graded.iter().any(|t| {
+                t.task == task.name()
+                    && matches!(t.status, TaskStatus::Passed | TaskStatus::Partial)
+            })
         })
         .collect()
 }
@@ -51,7 +53,7 @@ mod tests {
         );
         let all = [
             graded[0].clone(),
-            outcome(TaskId::CookTorrance, TaskStatus::Passed),
+            outcome(TaskId::CookTorrance, TaskStatus::Partial),
         ];
         assert!(missing_tasks(needs, &all).is_empty());
     }

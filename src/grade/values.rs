@@ -9,7 +9,7 @@ use super::call::Call;
 use super::case::{Rule, ValueCase};
 use super::output::{Output, fmt_num};
 use super::tolerance::Error;
-use super::verdict::{CheckKind, CheckResult, Visibility, Worst};
+use super::verdict::{CheckKind, CheckResult, RegionTally, Visibility, Worst};
 use crate::panics::{self, Panic};
 use crate::worksheet::Tasks;
 use serde::{Deserialize, Serialize};
@@ -59,6 +59,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     let mut worst: Option<Worst> = None;
     let mut ratios = Vec::new();
     let mut failing = Vec::new();
+    let mut failed_at = vec![false; cases.len()];
     let missing = Err(Panic {
         message: "the worker sent no output for this case".into(),
         location: None,
@@ -78,6 +79,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             },
             Err(p) => {
                 result.fail_panic(&format!("{} [{}]", case.call, case.name), p);
+                failed_at[i] = true;
                 (Error::UNBOUNDED, None)
             }
         };
@@ -88,9 +90,11 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             });
         }
         if let Some(problem) = failure {
+            failed_at[i] = true;
             failing.push((simplicity(case), case, problem, got_of(outcome)));
         }
     }
+    result.regions = regions(cases, &failed_at);
     // The simplest failing input first: a worksheet case, then the shortest inputs (exact
     // boundary and special values print short), which is where a student starts debugging.
     failing.sort_by_key(|(key, ..)| *key);
@@ -112,6 +116,20 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
         result.total - result.failed,
         result.total
     );
+    let failing_regions: Vec<String> = result
+        .regions
+        .iter()
+        .filter(|r| r.failed > 0)
+        .map(|r| format!("{} ({} of {} cases)", r.name, r.failed, r.total))
+        .collect();
+    if !failing_regions.is_empty() {
+        result.summary += &format!(
+            "; {} of {} regions of the domain pass, each worth an equal share: failing in {}",
+            result.regions.len() - failing_regions.len(),
+            result.regions.len(),
+            failing_regions.join(", ")
+        );
+    }
     if let Some(factor) = common_factor(&ratios) {
         result.summary += &format!(
             "; every failing value is {} × the expected one — a constant factor is missing or extra",
@@ -126,6 +144,25 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     }
     result.seconds = outputs.seconds;
     result
+}
+
+/// The cases of each region (in order of name), with their failing ones; empty when no case
+/// names a region.
+fn regions(cases: &[ValueCase], failed_at: &[bool]) -> Vec<RegionTally> {
+    let mut tally: std::collections::BTreeMap<&str, RegionTally> = Default::default();
+    for (case, failed) in cases.iter().zip(failed_at) {
+        if case.region.is_empty() {
+            continue;
+        }
+        let r = tally.entry(&case.region).or_insert_with(|| RegionTally {
+            name: case.region.clone(),
+            total: 0,
+            failed: 0,
+        });
+        r.total += 1;
+        r.failed += usize::from(*failed);
+    }
+    tally.into_values().collect()
 }
 
 /// What the student's code returned, as a failure shows it.

@@ -101,6 +101,22 @@ pub struct CheckResult {
     /// the worker reported it (statistics, never a verdict); none where it did not.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub peak_memory_kib: Option<u64>,
+    /// The declared regions of the domain its cases lie in, each with its count of cases
+    /// and of failing ones (a values check; empty for the others): the split its credit
+    /// follows ([`super::credit::Credit::PerRegion`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub regions: Vec<RegionTally>,
+}
+
+/// The cases of one region of a check ([`CheckResult::regions`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RegionTally {
+    /// The region, as [`crate::grade::catalogue::region`] names it.
+    pub name: String,
+    /// Cases in it.
+    pub total: usize,
+    /// Failing cases in it.
+    pub failed: usize,
 }
 
 /// The sum of points or weights, +0 when empty (`Iterator::sum` of no f64 is −0, which
@@ -156,6 +172,7 @@ impl CheckResult {
             detail: None,
             seconds: 0.0,
             peak_memory_kib: None,
+            regions: Vec::new(),
         }
     }
 
@@ -223,8 +240,13 @@ pub enum Detail {
 pub enum TaskStatus {
     /// Every check passed.
     Passed,
-    /// At least one check failed.
+    /// At least one check failed and the task lost more than its pass threshold
+    /// ([`crate::grade::checks::PASS_SHARE`] of its points kept).
     Failed,
+    /// Some check failed, but the task kept at least
+    /// [`crate::grade::checks::PASS_SHARE`] of its points (a bug confined to a region or
+    /// two): not failed, and the scenes that need it are not withheld.
+    Partial,
     /// The task is still the shipped `todo!()` stub.
     NotAttempted,
     /// The checks stopped at another task's stub (only without the reference, where the
@@ -259,6 +281,7 @@ impl TaskStatus {
         match self {
             TaskStatus::Passed => "passed".into(),
             TaskStatus::Failed => "FAILED".into(),
+            TaskStatus::Partial => "partly right".into(),
             TaskStatus::NotAttempted => "not attempted".into(),
             TaskStatus::NeedsTask { task } => format!("needs {task}"),
             TaskStatus::Crashed { .. } => "CRASHED".into(),

@@ -4,6 +4,7 @@
 //! anchors are built from indices, never from names.
 
 use super::{PairScore, PairSummary, TaskComparison, TaskScore};
+use crate::html_escape::escape;
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write;
 
@@ -264,28 +265,4 @@ fn file_lines(page: &mut String, text: &str, ranges: &[(usize, usize)]) {
 
 fn percent(score: f64) -> String {
     format!("{:.0} %", score * 100.0)
-}
-
-/// `text` safe as HTML element content and as a quoted attribute value: the five special
-/// characters as entities; control characters (other than tab) and the bidirectional
-/// overrides and isolates (which can make code read differently from what it is) as U+FFFD.
-pub(crate) fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len() + text.len() / 8);
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            '\t' => out.push('\t'),
-            c if c.is_control()
-                || matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}') =>
-            {
-                out.push('\u{FFFD}')
-            }
-            c => out.push(c),
-        }
-    }
-    out
 }

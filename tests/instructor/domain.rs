@@ -541,3 +541,56 @@ fn a_sampler_one_percent_off_its_pdf_fails_its_values() {
         );
     }
 }
+
+/// Credit by region: a bug confined to the tiniest cosines (Λ from tan²θ = (1 − c²)/c², NaN
+/// once c² underflows below 1e-19 or so) fails those special points' regions alone, the
+/// values checks lose exactly their share, and the task keeps more than its pass
+/// threshold: partly right, not failed.
+#[test]
+fn a_bug_confined_to_one_region_costs_that_region_s_share_and_is_not_a_failed_task() {
+    use crate::support::patch::Patch;
+    use pbrlab::grade::checks::{PASS_SHARE, grade_task, score};
+    use pbrlab::grade::credit::Credit;
+    use pbrlab::grade::runner::{GradeOptions, prepare};
+    use pbrlab::grade::verdict::TaskStatus;
+    crate::support::install();
+    let task = TaskId::SmithG1;
+    let mut patch = Patch::new(task);
+    patch.smith_g1 = Some(|w, alpha| {
+        if w.z <= 0.0 {
+            return 0.0;
+        }
+        let c2 = (w.z * w.z).min(1.0);
+        let a = alpha * alpha * (1.0 - c2) / c2;
+        1.0 / (1.0 + a / (2.0 * (1.0 + (1.0 + a).sqrt())))
+    });
+    let inputs = prepare(&GradeOptions {
+        hidden_seed: Some(3),
+        ..GradeOptions::default()
+    })
+    .expect("inputs");
+    let mut checks = grade_task(&patch, task, &inputs[&task]);
+    Credit::PerRegion.apply(&mut checks);
+    let values: Vec<_> = checks.iter().filter(|c| !c.regions.is_empty()).collect();
+    assert!(!values.is_empty(), "{checks:?}");
+    let mut failing_somewhere = false;
+    for c in &values {
+        let failing: Vec<_> = c.regions.iter().filter(|r| r.failed > 0).collect();
+        assert!(
+            failing.iter().all(|r| r.name.starts_with("cos θ of w = ")),
+            "{}: {failing:?}",
+            c.name
+        );
+        let share = 1.0 - failing.len() as f64 / c.regions.len() as f64;
+        assert!((c.credit - share).abs() < 1e-12, "{}: {}", c.name, c.credit);
+        failing_somewhere |= !failing.is_empty();
+    }
+    assert!(failing_somewhere, "the cut-off is caught");
+    let (status, points) = score(task, &checks);
+    let max = task.info().points as f64;
+    assert_eq!(status, TaskStatus::Partial, "{points} of {max}");
+    assert!(
+        points < max && points >= PASS_SHARE * max,
+        "{points} of {max}"
+    );
+}

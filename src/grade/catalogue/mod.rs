@@ -276,6 +276,40 @@ pub fn position(call: &Call) -> Option<String> {
     (!all.is_empty()).then(|| all.join("; "))
 }
 
+/// The region of the fixed cases (worksheet, errata and exercise-text cases).
+pub const WORKED_CASES: &str = "the worked cases (worksheet, errata, text)";
+/// The region of a drawn case near no boundary and on no special value.
+pub const INTERIOR: &str = "the interior";
+
+/// The declared region of its task's domain that the drawn `call` lies in: on a special
+/// value (`alpha = 0`, `cos θ of w = 1e-45`), else on a boundary (`cos θ of w: on the
+/// horizon`), else in the band next to a boundary (`cos θ of w: near the horizon`, within
+/// 1e-2 relative), else [`INTERIOR`]; the first declared parameter decides among equals. A values check's
+/// credit is split over the regions its cases lie in, so that a bug confined to one region
+/// costs that region's share, however few draws land there.
+pub fn region(call: &Call) -> String {
+    /// Relative distance under which a value is in a boundary's band.
+    const BAND: f64 = 1e-2;
+    let mut on = None;
+    let mut near = None;
+    for p in domain(call.task()) {
+        let Some(v) = (p.value)(call) else { continue };
+        // A special value first: a cosine of 1e-45 lies within rounding of the horizon
+        // but is a point of its own.
+        if let Some(s) = p.special_values().find(|s| (v - s).abs() <= 1e-6 * s.abs()) {
+            return format!("{} = {}", p.name, fmt_num(s));
+        }
+        if let Some((b, distance)) = p.nearest_boundary(v) {
+            if distance <= crate::grade::domain::ON_BOUNDARY && on.is_none() {
+                on = Some(format!("{}: on {}", p.name, b.what));
+            } else if distance <= BAND && near.is_none() {
+                near = Some(format!("{}: near {}", p.name, b.what));
+            }
+        }
+    }
+    on.or(near).unwrap_or_else(|| INTERIOR.to_string())
+}
+
 fn fixed(task: TaskId) -> Vec<CaseInput> {
     fixed_of(task)
 }
@@ -439,6 +473,11 @@ pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<Valu
             rule,
             note: input.note.clone(),
             expected,
+            region: if input.drawn {
+                region(&input.call)
+            } else {
+                WORKED_CASES.to_string()
+            },
         });
     }
     Ok(cases)

@@ -69,7 +69,10 @@ fn tests_of(t: &TaskOutcome) -> Vec<Test> {
             t.max_points
         }
     };
-    let scored = matches!(t.status, TaskStatus::Passed | TaskStatus::Failed);
+    let scored = matches!(
+        t.status,
+        TaskStatus::Passed | TaskStatus::Partial | TaskStatus::Failed
+    );
     // Each check earns its weight times its credit (the course's policy for partly right
     // checks); the group passed when every check in it did.
     let group = |vis: Visibility| {

@@ -13,17 +13,11 @@ use anyhow::Context;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-/// `s` safe inside HTML text and double-quoted attributes.
-pub(crate) fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
+pub(crate) use crate::html_escape::escape;
 
 const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:70em;margin:2em auto;padding:0 1em}\
 table{border-collapse:collapse}td,th{padding:.2em .6em;border-bottom:1px solid #ddd;text-align:left}\
-.passed{color:#176b2c}.failed{color:#a11}.muted{color:#777}pre{background:#f6f6f6;padding:.5em;overflow-x:auto;white-space:pre-wrap}\
+.passed{color:#176b2c}.partial{color:#8a5a00}.failed{color:#a11}.muted{color:#777}pre{background:#f6f6f6;padding:.5em;overflow-x:auto;white-space:pre-wrap}\
 .maps{display:flex;gap:1em;flex-wrap:wrap}figure{margin:0}figcaption{font-size:.8em;color:#555}\
 .render{display:flex;gap:1.5em;flex-wrap:wrap;align-items:flex-start}.pixels{width:288px;height:288px;image-rendering:pixelated;display:block;cursor:crosshair}.wipe{position:relative;width:288px;height:288px}.wipe img{position:absolute;top:0;left:0}.legend{display:flex;align-items:center;gap:.4em;font-size:.8em;color:#555}.ramp{display:inline-block;width:120px;height:10px;background:linear-gradient(to right,#00f,#fff,#f00)}.swatch{display:inline-block;width:10px;height:10px}.probe{font-family:monospace;font-size:.85em;min-height:1.2em}";
 
@@ -203,10 +197,10 @@ pub fn page(report: &GradeReport, dir: Option<&Path>) -> String {
         s += &format!("<p class=\"muted\">{}</p>", escape(&note));
     }
     for t in &report.tasks {
-        let class = if t.status == TaskStatus::Passed {
-            "passed"
-        } else {
-            "failed"
+        let class = match t.status {
+            TaskStatus::Passed => "passed",
+            TaskStatus::Partial => "partial",
+            _ => "failed",
         };
         let name = if t.folds() {
             t.task.clone()

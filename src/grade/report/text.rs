@@ -6,7 +6,10 @@ use std::fmt::Write;
 
 /// The worst error of a task, short: `abs 2.1e-3 (rel 0.8 %)`.
 fn worst(outcome: &TaskOutcome) -> String {
-    if !matches!(outcome.status, TaskStatus::Passed | TaskStatus::Failed) {
+    if !matches!(
+        outcome.status,
+        TaskStatus::Passed | TaskStatus::Partial | TaskStatus::Failed
+    ) {
         return "-".into();
     }
     match outcome.worst() {
@@ -276,9 +279,10 @@ pub fn details(t: &TaskOutcome) -> String {
         TaskStatus::Passed
         | TaskStatus::NotAttempted
         | TaskStatus::NoChecks
-        | TaskStatus::Failed => {}
+        | TaskStatus::Failed
+        | TaskStatus::Partial => {}
     }
-    if t.status == TaskStatus::Failed {
+    if matches!(t.status, TaskStatus::Failed | TaskStatus::Partial) {
         for c in t.checks.iter().filter(|c| !c.passed) {
             if c.visibility == Visibility::Hidden {
                 let _ = writeln!(
