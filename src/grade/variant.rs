@@ -6,7 +6,7 @@
 //! Each variant is drawn from the declared domains like every hidden case
 //! ([`super::domain`]), with the same tolerances and false-failure rates, so variants need
 //! no calibration of their own (`tests/instructor/variants.rs` measures the overlap between
-//! students; `tests/instructor/calibration.rs` the false failures over 60 gradings, each
+//! students; `tests/instructor/calibration.rs` the false failures over 50 gradings, each
 //! with seeds and hidden cases of its own). What varies: the hidden
 //! value cases (inputs, and so their expected answers) and the seed of the statistical
 //! checks. What does not: the public cases, and the scenes of the estimator checks, whose

@@ -8,14 +8,14 @@ use pbrlab::grade::runner::GradeOptions;
 use pbrlab::implementation::ImplChoice;
 
 /// Gradings of the reference, each with seeds and hidden cases of its own (as a class of
-/// 60 students would be graded). The per-task false-failure rates of the estimator and
+/// 50 students would be graded). The per-task false-failure rates of the estimator and
 /// sampling checks are also measured in-process, at 200 seeds, by the power test
 /// (`power.rs`, its level 0); these runs add the whole path (workers, renders, hidden
 /// cases) and the p-values' uniformity.
-const RUNS: usize = 60;
+const RUNS: usize = 50;
 
 #[test]
-#[ignore = "slow: grades the reference with hidden cases and renders its scenes 60 times (about 3 minutes on two cores)"]
+#[ignore = "slow: grades the reference with hidden cases and renders its scenes 50 times (about 2 minutes on two cores)"]
 fn the_reference_fails_no_more_often_than_declared() {
     // The grader's own process consults the task tables (which checks a task has); like the
     // `pbrlab` binary, it links no student code.
