@@ -7,7 +7,7 @@ use crate::bsdf::{KajiyaKayParams, PhongParams};
 use crate::optics::{LayerStack, Slab};
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -149,6 +149,19 @@ impl Call {
         }
     }
 
+    /// The call with its random numbers drawn from another stream, the `k`-th: `None` for a
+    /// call that draws none.
+    pub fn reseeded(&self, k: u64) -> Option<Call> {
+        let mut call = self.clone();
+        match &mut call {
+            Call::ReciprocityGap { seed, .. } | Call::BrdfCheck { seed, .. } => {
+                *seed = seed.wrapping_add(k.wrapping_mul(0x9e37_79b9_7f4a_7c15));
+                Some(call)
+            }
+            _ => None,
+        }
+    }
+
     /// Calls the function on `t` and converts its result.
     pub fn eval(&self, t: &impl Tasks) -> Output {
         match self {
@@ -224,206 +237,6 @@ impl Call {
             }
         }
     }
-}
-
-/// How many f32 ulps [`Call::jitters`] moves an input at most: the rounding a correct
-/// implementation may introduce in the quantities it derives from its inputs.
-pub const JITTER_ULPS: f64 = 4.0;
-
-/// The smallest positive (subnormal) f32, 2^-149.
-const SMALLEST_SUBNORMAL: f64 = 1.401_298_464_324_817e-45;
-
-/// The inputs that are directions: [`Call::jitters`] also turns them a little.
-const DIRECTIONS: [&str; 6] = ["w", "wo", "wi", "h", "n", "tangent"];
-
-/// The largest angle (radians) by which [`Call::jitters`] turns a direction: what an
-/// angle computed from a cosine or sine within `JITTER_ULPS` ulps of 1 may be off,
-/// `sqrt(2 · 4 ε)`.
-const MAX_TURN: f64 = 9.8e-4;
-
-/// A uniform number in [0, 1) from `seed` and `salt`: the same pair, the same number.
-fn hash_unit(seed: u64, salt: u64) -> f64 {
-    let mut h = seed ^ salt.wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    h ^= h >> 29;
-    h = h.wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    h ^= h >> 32;
-    h = h.wrapping_mul(0x94d0_49bb_1331_11eb);
-    h ^= h >> 31;
-    (h >> 11) as f64 / (1u64 << 53) as f64
-}
-
-impl Call {
-    /// Copies of the call with its inputs moved within what a correct f32 implementation may
-    /// lose to rounding, to measure how far correct answers can lie from the reference's:
-    /// - every real input by up to [`JITTER_ULPS`] ulps, by a factor that depends only on
-    ///   `seed` and the value, so equal inputs stay equal (equal indices, `αx = αy`) and
-    ///   zeros stay zero; a subnormal one (a cosine of 1e-45) by up to as many of the
-    ///   smallest subnormal, away from 0;
-    /// - every direction turned by `JITTER_ULPS · ε / sin θ` near a pole of the local
-    ///   normal or of another direction, or by `JITTER_ULPS · ε / cos θ` near the horizon
-    ///   of another direction (at most `MAX_TURN`), toward that axis (landing on a pole
-    ///   that close), away from it, or sideways: an implementation that goes through
-    ///   `sqrt(1 − cos²)`, `acos` or `asin` (the polar form of an NDF, Snell's law by
-    ///   angles) loses that much there, and a direction stored in f32 is not quite unit, so
-    ///   `z` and `(x, y)` disagree near the normal; and its length stretched by up to
-    ///   [`JITTER_ULPS`] ulps.
-    ///
-    /// Integers (seeds, counts) are kept. Returns `count` such calls, one per seed
-    /// `1..=count`.
-    pub fn jitters(&self, count: u64) -> Vec<Call> {
-        fn walk(v: &mut serde_json::Value, seed: u64) {
-            match v {
-                serde_json::Value::Number(n) if n.is_f64() => {
-                    let x = n.as_f64().unwrap_or(0.0);
-                    let u = hash_unit(seed, x.to_bits());
-                    let factor = 1.0 + (2.0 * u - 1.0) * JITTER_ULPS * f32::EPSILON as f64;
-                    // A subnormal f32 has fewer digits than ulps can move: move it by up
-                    // to `JITTER_ULPS` of the smallest subnormal instead, keeping its sign.
-                    let moved = if x != 0.0 && x.abs() < f32::MIN_POSITIVE as f64 {
-                        let step = JITTER_ULPS * SMALLEST_SUBNORMAL * u;
-                        x.signum() * (x.abs() + step)
-                    } else {
-                        x * factor
-                    };
-                    if let Some(m) = serde_json::Number::from_f64(moved) {
-                        *n = m;
-                    }
-                }
-                serde_json::Value::Array(items) => items.iter_mut().for_each(|i| walk(i, seed)),
-                serde_json::Value::Object(fields) => {
-                    fields.values_mut().for_each(|f| walk(f, seed))
-                }
-                _ => {}
-            }
-        }
-        let Ok(value) = serde_json::to_value(self) else {
-            return vec![self.clone(); count as usize];
-        };
-        let directions: Vec<(String, DVec3)> = DIRECTIONS
-            .iter()
-            .filter_map(|name| {
-                let v: Vec3 = serde_json::from_value(value.get(*name)?.clone()).ok()?;
-                Some((name.to_string(), v.as_dvec3()))
-            })
-            .collect();
-        let turns: Vec<Turn> = directions
-            .iter()
-            .enumerate()
-            .filter_map(|(i, (name, v))| Turn::of(name, *v, &directions, i))
-            .collect();
-        (1..=count)
-            .map(|seed| {
-                let mut value = value.clone();
-                walk(&mut value, seed);
-                for (i, turn) in turns.iter().enumerate() {
-                    if let Ok(turned) = serde_json::to_value(turn.sample(seed, i).as_vec3()) {
-                        value[turn.name.as_str()] = turned;
-                    }
-                }
-                serde_json::from_value(value).unwrap_or_else(|_| self.clone())
-            })
-            .collect()
-    }
-}
-
-/// How [`Call::jitters`] turns one direction input.
-struct Turn {
-    /// The input's name.
-    name: String,
-    /// Its length, kept.
-    len: f64,
-    /// Its unit direction.
-    d: DVec3,
-    /// The axis of the worst loss (a pole, or the normal of a horizon it lies near).
-    axis: DVec3,
-    /// Whether that axis is a pole (toward it, a turn may land on it).
-    is_pole: bool,
-    /// The angle to turn by.
-    angle: f64,
-}
-
-impl Turn {
-    /// The turn of the direction `v` named `name`, the `i`-th of `directions`.
-    fn of(name: &str, v: DVec3, directions: &[(String, DVec3)], i: usize) -> Option<Turn> {
-        let len = v.length();
-        if len == 0.0 {
-            return None;
-        }
-        let d = v / len;
-        let others: Vec<DVec3> = directions
-            .iter()
-            .enumerate()
-            .filter(|(j, (_, u))| *j != i && u.length() > 0.0)
-            .map(|(_, (_, u))| u.normalize())
-            .collect();
-        // Near a pole (of the local normal or another direction), `sqrt(1 − cos²)` and
-        // `acos` lose `ε / sin θ`; near the horizon of another direction, `asin` (Snell's
-        // law by angles) loses `ε / cos θ`. Neither more than `sqrt(2ε)`.
-        let pole = others
-            .iter()
-            .copied()
-            .chain([DVec3::Z])
-            .map(|u| if d.dot(u) < 0.0 { -u } else { u })
-            .max_by(|a, b| d.dot(*a).total_cmp(&d.dot(*b)))
-            .unwrap_or(DVec3::Z);
-        let to_pole = d.dot(pole).clamp(-1.0, 1.0).acos();
-        let horizon = others
-            .iter()
-            .copied()
-            .min_by(|a, b| d.dot(*a).abs().total_cmp(&d.dot(*b).abs()));
-        let ulps = JITTER_ULPS * f32::EPSILON as f64;
-        let pole_turn = (ulps / to_pole.sin().max(1e-300)).min(MAX_TURN);
-        let horizon_turn =
-            horizon.map_or(0.0, |u| (ulps / d.dot(u).abs().max(1e-300)).min(MAX_TURN));
-        let (axis, is_pole) = match horizon {
-            Some(u) if horizon_turn > pole_turn && d.dot(u) >= 0.0 => (u, false),
-            Some(u) if horizon_turn > pole_turn => (-u, false),
-            _ => (pole, true),
-        };
-        Some(Turn {
-            name: name.to_string(),
-            len,
-            d,
-            axis,
-            is_pole,
-            angle: pole_turn.max(horizon_turn),
-        })
-    }
-
-    /// The turned vector for `seed`: toward the axis (landing on a pole that close), away
-    /// from it, or sideways at an azimuth from `seed` and `salt`; its length stretched by
-    /// up to [`JITTER_ULPS`] ulps.
-    fn sample(&self, seed: u64, salt: usize) -> DVec3 {
-        let (d, axis, turn) = (self.d, self.axis, self.angle);
-        let at = d.dot(axis).clamp(-1.0, 1.0).acos();
-        // On the axis itself (`wi` exactly along the fibre), away is every way: pick one
-        // per direction, so that directions on one line move apart. (What is left of `d`
-        // off the axis there is rounding, the same for every direction on that line.)
-        let off = if d.cross(axis).length() < 1e-12 {
-            sideways(d, seed, salt)
-        } else {
-            (d - axis * d.dot(axis)).normalize()
-        };
-        let turned = match seed % 3 {
-            1 if self.is_pole && at <= turn => axis,
-            1 => axis * (at - turn).cos() + off * (at - turn).sin(),
-            2 => axis * (at + turn).cos() + off * (at + turn).sin(),
-            _ => d * turn.cos() + sideways(d, seed, salt) * turn.sin(),
-        };
-        // And stretched within rounding: an f32 direction is unit only to a few ulps, and
-        // code that normalises it and code that does not differ by that much (`sin θ`
-        // from a dot product near ±1 by much more).
-        let stretch = 1.0
-            + (2.0 * hash_unit(seed, salt as u64 + 7) - 1.0) * JITTER_ULPS * f32::EPSILON as f64;
-        turned * self.len * stretch
-    }
-}
-
-/// A unit vector perpendicular to `d`, at an azimuth from `seed` and `salt`.
-fn sideways(d: DVec3, seed: u64, salt: usize) -> DVec3 {
-    let phi = std::f64::consts::TAU * hash_unit(seed, salt as u64 + 1);
-    let (a, b) = d.any_orthonormal_pair();
-    a * phi.cos() + b * phi.sin()
 }
 
 /// A vector for messages: `(0.6, -0.8, 0)`.

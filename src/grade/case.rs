@@ -36,7 +36,9 @@ pub enum Rule {
     /// Every number within the tolerance, same shape (`None` only where expected).
     Close(Tolerance),
     /// A measured quantity only judged on which side of `threshold` it falls (for Monte
-    /// Carlo answers whose exact value depends on the random numbers a student draws).
+    /// Carlo answers whose exact value depends on the random numbers a student draws; one
+    /// the contract fixes whatever is drawn is judged by value instead, see
+    /// [`crate::grade::catalogue::evaluate`]).
     SameSide {
         /// The dividing value.
         threshold: f64,
@@ -47,6 +49,11 @@ pub enum Rule {
     Plausibility {
         /// Relative tolerance on `max_albedo`, for BRDFs whose albedo is a constant.
         albedo: Option<f64>,
+        /// Whether `max_reciprocity_error` is judged by value ([`Tolerance::F32`]) as well
+        /// as by verdict: where the contract fixes it whatever pairs are drawn (0 for a
+        /// reciprocal BRDF, 1/2 for one twice as bright one way round).
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        gap_by_value: bool,
     },
     /// A list of ratios that should be 1 (a sampler's Jacobian times its pdf): at least
     /// `share` of the finite ones within `tolerance` of 1, and at least half finite (seams
@@ -110,11 +117,13 @@ impl ValueCase {
                     ))
                 }
             }
-            Rule::Plausibility { albedo } => judge_plausibility(got, &self.expected, albedo)
-                .and_then(|error| {
-                    judge_worst_wi(got, &self.call)?;
-                    Ok(error)
-                }),
+            Rule::Plausibility {
+                albedo,
+                gap_by_value,
+            } => judge_plausibility(got, &self.expected, albedo, gap_by_value).and_then(|error| {
+                judge_worst_wi(got, &self.call)?;
+                Ok(error)
+            }),
             Rule::Unity { tolerance, share } => judge_unity(got, tolerance, share),
         }
     }
@@ -189,6 +198,7 @@ fn judge_plausibility(
     got: &Output,
     expected: &Output,
     albedo: Option<f64>,
+    gap_by_value: bool,
 ) -> Result<Error, String> {
     let field = |o: &Output, name: &str| o.field(name).and_then(Output::as_number);
     let mut problems = Vec::new();
@@ -223,6 +233,20 @@ fn judge_plausibility(
                 fmt_num(e)
             ));
         }
+    }
+    let (g, e) = (
+        field(got, "max_reciprocity_error"),
+        field(expected, "max_reciprocity_error"),
+    );
+    if let (true, Some(g), Some(e)) = (gap_by_value, g, e)
+        && !Tolerance::F32.close(g, e)
+    {
+        problems.push(format!(
+            "max_reciprocity_error = {}, expected {}: this BRDF's gap is the same for every \
+             pair of directions",
+            fmt_num(g),
+            fmt_num(e)
+        ));
     }
     let (g, e) = (field(got, "max_albedo"), field(expected, "max_albedo"));
     if let (Some(rel), Some(g), Some(e)) = (albedo, g, e)
@@ -331,7 +355,10 @@ mod tests {
             worst_wi: glam::Vec3::Z,
         };
         let c = case(
-            Rule::Plausibility { albedo: Some(0.1) },
+            Rule::Plausibility {
+                albedo: Some(0.1),
+                gap_by_value: false,
+            },
             report(0.16, 0.0, 0.5).into_output(),
         );
         assert!(c.judge(&report(0.16, 0.0, 0.52).into_output()).is_ok());
@@ -342,6 +369,29 @@ mod tests {
         );
         let e = c.judge(&report(0.16, 0.0, 0.8).into_output()).unwrap_err();
         assert!(e.contains("max_albedo = 0.8"), "{e}");
+        // A gap the contract fixes is judged by value too: 5e-4 is "reciprocal" by verdict
+        // but not the 0 every pair gives.
+        let lenient = c.judge(&report(0.16, 5e-4, 0.5).into_output());
+        assert!(lenient.is_ok(), "{lenient:?}");
+        let by_value = case(
+            Rule::Plausibility {
+                albedo: Some(0.1),
+                gap_by_value: true,
+            },
+            report(0.16, 0.0, 0.5).into_output(),
+        );
+        assert!(
+            by_value
+                .judge(&report(0.16, 0.0, 0.5).into_output())
+                .is_ok()
+        );
+        let e = by_value
+            .judge(&report(0.16, 5e-4, 0.5).into_output())
+            .unwrap_err();
+        assert!(
+            e.contains("max_reciprocity_error = 5e-4, expected 0"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -37,6 +37,7 @@ pub mod feedback;
 pub mod history;
 pub mod image_check;
 pub mod isolation;
+pub mod jitter;
 pub mod lenient_f64;
 pub mod output;
 pub mod power;

@@ -23,7 +23,10 @@ fn check(name: &str, brdf: TestBrdf, seed: u64, albedo: Option<f64>) -> CaseInpu
             samples: SAMPLES,
         },
     )
-    .rule(Rule::Plausibility { albedo })
+    .rule(Rule::Plausibility {
+        albedo,
+        gap_by_value: false,
+    })
 }
 
 /// Share by which a Lambertian's reported albedo may miss its true albedo (Monte Carlo noise
