@@ -1,9 +1,11 @@
-//! Text made safe for the HTML pages pbrlab writes (reports, similarity pages, item
-//! analyses), which print student-controlled text: one escaper for all of them.
+//! Text made safe for the HTML pages and XML reports pbrlab writes (reports, similarity
+//! pages, item analyses, JUnit XML), which print student-controlled text: one escaper for
+//! all of them.
 
-/// `text` safe as HTML element content and as a quoted attribute value: the five special
-/// characters as entities; control characters (other than tab) and the bidirectional
-/// overrides and isolates (which can make code read differently from what it is) as U+FFFD.
+/// `text` safe as HTML or XML element content and as a quoted attribute value: the five
+/// special characters as entities; control characters (other than tab), the two
+/// non-characters XML forbids and the bidirectional overrides and isolates (which can make
+/// code read differently from what it is) as U+FFFD.
 pub fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + text.len() / 8);
     for c in text.chars() {
@@ -15,7 +17,10 @@ pub fn escape(text: &str) -> String {
             '\'' => out.push_str("&#39;"),
             '\t' => out.push('\t'),
             c if c.is_control()
-                || matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}') =>
+                || matches!(
+                    c,
+                    '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}' | '\u{FFFE}' | '\u{FFFF}'
+                ) =>
             {
                 out.push('\u{FFFD}')
             }

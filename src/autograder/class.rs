@@ -32,12 +32,13 @@ pub const NOT_GRADED: &str = "not graded";
 
 /// The class-wide files a run writes from all results (a regrade keeps the old ones in
 /// `history/<time>/`).
-const TABLES: [&str; 5] = [
+const TABLES: [&str; 6] = [
     "class.csv",
     "canvas.csv",
     "moodle.csv",
     "summary.md",
     "summary.html",
+    "junit.xml",
 ];
 
 /// The status of a submission whose build ran into its bounds (a compile-time bomb): a
@@ -620,6 +621,15 @@ impl ClassRun<'_> {
         crate::atomic_file::write(
             &self.out.join("summary.html"),
             item_analysis::html(&head, &rows).as_bytes(),
+        )?;
+        // junit.xml: a suite per student and task, for CI systems that read JUnit.
+        let runs = results.iter().map(|r| {
+            let run = r.report.as_ref().ok_or(r.message.as_str());
+            (Some(r.student.as_str()), run)
+        });
+        crate::atomic_file::write(
+            &self.out.join("junit.xml"),
+            crate::grade::report::junit::junit(runs).as_bytes(),
         )?;
         let roster = match &self.roster {
             Some(path) => Roster::load(path)?,

@@ -11,7 +11,7 @@ use std::time::Duration;
 pub struct Args {
     /// The folder of submissions: one subfolder or zip file per student.
     pub submissions: PathBuf,
-    /// Where the results go (students/<name>.json, class.csv, summary.md). A run that
+    /// Where the results go (students/<name>.json, class.csv, summary.md, junit.xml). A run that
     /// stopped continues where it stopped.
     #[arg(long)]
     pub out: PathBuf,

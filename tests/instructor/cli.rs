@@ -61,6 +61,35 @@ fn the_stubs_grade_to_zero_and_tasks_shows_it() {
     }
 }
 
+/// `grade --format junit` is JUnit XML as CI tools read it: the stubs' checks are skipped
+/// as not attempted, the reference's all pass.
+#[test]
+fn junit_reports_follow_the_schema_and_say_what_the_grade_says() {
+    let state = tempfile::tempdir().unwrap();
+    let stubs = pbrlab(state.path(), &["grade", "--format", "junit"]);
+    assert!(
+        stubs.status.success(),
+        "{}",
+        String::from_utf8_lossy(&stubs.stderr)
+    );
+    let xml = stdout(&stubs);
+    let (tests, failures, skipped) = crate::junit_schema::validate(&xml);
+    if crate::shipped_stubs::untouched().len() == TaskId::ALL.len() {
+        assert_eq!(failures, 0, "{xml}");
+        assert_eq!(skipped, tests, "{xml}");
+        assert!(xml.contains("not attempted: the functions still stop at todo!()"));
+    }
+    let reference = pbrlab(
+        state.path(),
+        &["grade", "--impl", "reference", "--format", "junit"],
+    );
+    assert!(reference.status.success());
+    let xml = stdout(&reference);
+    let (tests, failures, skipped) = crate::junit_schema::validate(&xml);
+    assert!(tests > 40, "{xml}");
+    assert_eq!((failures, skipped), (0, 0), "{xml}");
+}
+
 /// The row of `task` in `pbrlab tasks`' table.
 fn row<'t>(table: &'t str, task: &str) -> &'t str {
     table

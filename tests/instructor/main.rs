@@ -5,6 +5,7 @@
 //! - the grader grading itself: `grader`, `domain`, `power`, `calibration`, `expected`,
 //!   `renders`, `stability`;
 //! - the trust boundary: `trust` (compile time), `hostile` and `isolation` (run time);
+//! - the map of the code: `architecture` (every file in `src/ARCHITECTURE.md`);
 //! - the commands and packages end to end: `cli`, `autograder`, `handout`, `report`,
 //!   `converge`;
 //! - the reference renderer against closed forms: `reference_values`, `render_*`.
@@ -13,9 +14,12 @@
 //! and each task's variants from `src/tasks/<task>/variants.rs`), `shipped_stubs`.
 #![cfg(feature = "solutions")]
 
+#[path = "../junit_schema.rs"]
+mod junit_schema;
 mod shipped_stubs;
 mod support;
 
+mod architecture;
 mod autograder;
 mod calibration;
 mod cli;

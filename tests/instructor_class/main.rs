@@ -10,6 +10,8 @@
 #![cfg(feature = "solutions")]
 
 mod attacks;
+#[path = "../junit_schema.rs"]
+mod junit_schema;
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -368,6 +370,18 @@ fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedba
     );
     let page = std::fs::read_to_string(out.join("summary.html")).unwrap();
     assert!(page.contains("<svg") && page.contains("smith_g1"), "{page}");
+    // junit.xml: a suite per student and task; bob's wrong smith_g1 fails with its input.
+    let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
+    let (_, failures, _) = junit_schema::validate(&junit);
+    assert!(failures >= 1, "{junit}");
+    let suite = &junit[junit
+        .find("<testsuite name=\"bob: smith_g1\"")
+        .expect("bob's suite")..];
+    let suite = &suite[..suite.find("</testsuite>").unwrap()];
+    assert!(
+        suite.contains("<failure") && suite.contains("smith_g1(w="),
+        "{suite}"
+    );
     // The same key regrades the same variants: nothing changes.
     grade_class(true);
     let changes = std::fs::read_to_string(out.join("changes.md")).unwrap();

@@ -1,9 +1,10 @@
-//! Reports of a grading run: a terminal table, JSON, Gradescope's results.json and an HTML
-//! page.
+//! Reports of a grading run: a terminal table, JSON, Gradescope's and PrairieLearn's
+//! results.json, JUnit XML and an HTML page.
 
 pub mod gradescope;
 mod html;
 pub mod images;
+pub mod junit;
 pub mod prairielearn;
 mod svg;
 mod text;
@@ -25,6 +26,8 @@ pub enum Format {
     Gradescope,
     /// PrairieLearn's external-grader results.json.
     Prairielearn,
+    /// JUnit XML (GitLab CI, Jenkins, CodeGrade): a suite per task, a case per check.
+    Junit,
 }
 
 /// `report` in `format` (`detail` is how much the text table shows).
@@ -40,5 +43,6 @@ pub fn render(
         Format::Prairielearn => {
             serde_json::to_string_pretty(&prairielearn::prairielearn(report, ""))?
         }
+        Format::Junit => junit::junit([(None, Ok(report))]),
     })
 }
