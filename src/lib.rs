@@ -56,7 +56,7 @@
 //! the task tables and the renderer but never calls the grader's judging code, so the linker
 //! drops the embedded expected data and reference renders from it (a test searches the file
 //! for every stored file's bytes). A worker gets inputs (calls, sampler setups, seeds, a
-//! scene name) and sends back raw outputs only ([`grade::checks::Raw`]: values, binned
+//! scene name) and sends back raw outputs only ([`grade::wire::Raw`]: values, binned
 //! samples, estimates, variances, stability values, a render's mean and variance); the
 //! grader, which never runs student code, keeps the list of checks and every expected value
 //! and judges them, so an output left out fails its check and nothing a worker prints can

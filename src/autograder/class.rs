@@ -9,10 +9,12 @@
 use super::gradebook::{self, Roster};
 use super::item_analysis;
 use super::regrade::StudentChange;
+use super::student_result::{StudentResult, SubmissionStatus};
 use super::submission::{self, Intake};
 use crate::grade::credit::Credit;
-use crate::grade::feedback::{self, Feedback};
+use crate::grade::feedback::Feedback;
 use crate::grade::isolation::{Launcher, WORKER_BINARY};
+use crate::grade::report::redact::redact;
 use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::{BuildFailure, StudentBuild};
 use crate::grade::variant::Variant;
@@ -20,15 +22,10 @@ use crate::grade::verdict::{GradeReport, TaskStatus, format_points};
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
-use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-
-/// The status of a result that is not a grade: the grading machinery failed (the framework
-/// did not build, a crash of the grader). Such a result is graded again on the next run.
-pub const NOT_GRADED: &str = "not graded";
 
 /// The class-wide files a run writes from all results (a regrade keeps the old ones in
 /// `history/<time>/`).
@@ -40,29 +37,6 @@ const TABLES: [&str; 6] = [
     "summary.html",
     "junit.xml",
 ];
-
-/// The status of a submission whose build ran into its bounds (a compile-time bomb): a
-/// grade of 0, which a rerun keeps.
-pub const BUILD_ERROR: &str = "build error";
-
-/// The result of one student.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct StudentResult {
-    /// The student: the submission's folder or zip name.
-    pub student: String,
-    /// `graded`, [`BUILD_ERROR`] or [`NOT_GRADED`], with the reason in `message`.
-    pub status: String,
-    /// Why the submission was not graded, if it was not.
-    pub message: String,
-    /// The files graded, as found in the submission.
-    pub taken: Vec<String>,
-    /// What was ignored, with the reasons.
-    pub ignored: Vec<String>,
-    /// The grade (none when the submission could not be built or graded).
-    pub report: Option<GradeReport>,
-    /// Wall time for the student, build included, in seconds.
-    pub seconds: f64,
-}
 
 /// A class to grade.
 pub struct ClassRun<'a> {
@@ -151,7 +125,8 @@ fn file_name(student: &str) -> String {
 /// True when `result` met a wall deadline: its build did not finish in time, or a task's
 /// worker was stopped at the task's time limit.
 fn ran_out_of_time(result: &StudentResult) -> bool {
-    let build = result.status == BUILD_ERROR && result.message.contains("did not finish within");
+    let build = result.status == SubmissionStatus::BuildError
+        && result.message.contains("did not finish within");
     let task = result.report.as_ref().is_some_and(|report| {
         report.tasks.iter().any(|t| {
             matches!(&t.status, TaskStatus::Crashed { reason } if reason.starts_with("timed out"))
@@ -196,7 +171,7 @@ impl ClassRun<'_> {
         // A result that is not a grade (the grading machinery failed) is tried again.
         let retried = all
             .iter()
-            .filter(|(student, _)| self.saved_status(student).as_deref() == Some(NOT_GRADED))
+            .filter(|(student, _)| self.saved_status(student) == Some(SubmissionStatus::NotGraded))
             .count();
         let todo: Vec<_> = all
             .iter()
@@ -204,7 +179,7 @@ impl ClassRun<'_> {
                 self.regrade
                     || self
                         .saved_status(student)
-                        .is_none_or(|status| status == NOT_GRADED)
+                        .is_none_or(|status| status == SubmissionStatus::NotGraded)
             })
             .cloned()
             .collect();
@@ -411,11 +386,11 @@ impl ClassRun<'_> {
     }
 
     /// The status a saved result has, if there is one.
-    fn saved_status(&self, student: &str) -> Option<String> {
+    fn saved_status(&self, student: &str) -> Option<SubmissionStatus> {
         let text = std::fs::read_to_string(self.result_file(student)).ok()?;
         let value: serde_json::Value = serde_json::from_str(&text).ok()?;
         // A file that does not read as a result is not a grade either.
-        Some(value["status"].as_str().unwrap_or(NOT_GRADED).to_string())
+        Some(serde_json::from_value(value["status"].clone()).unwrap_or(SubmissionStatus::NotGraded))
     }
 
     /// Builds the framework and the worker once, from the shipped stubs, before any
@@ -469,7 +444,7 @@ impl ClassRun<'_> {
         let not_graded = |message: String, intake: Option<&Intake>| {
             Box::new(StudentResult {
                 student: student.to_string(),
-                status: NOT_GRADED.into(),
+                status: SubmissionStatus::NotGraded,
                 message,
                 taken: intake.map(taken).unwrap_or_default(),
                 ignored: intake.map(|i| i.ignored.clone()).unwrap_or_default(),
@@ -518,7 +493,7 @@ impl ClassRun<'_> {
                 let mut result = not_graded(format!("{e:#}"), Some(&intake));
                 // A compile-time bomb is the submission's doing: a grade of 0, not a retry.
                 if e.chain().any(|c| c.is::<BuildFailure>()) {
-                    result.status = BUILD_ERROR.into();
+                    result.status = SubmissionStatus::BuildError;
                 }
                 Err(result)
             }
@@ -554,9 +529,9 @@ impl ClassRun<'_> {
         let (status, message, report) = match grade(&options, &launcher) {
             Ok(mut report) => {
                 report.variant = variant.map(|v| v.id);
-                ("graded".to_string(), String::new(), Some(report))
+                (SubmissionStatus::Graded, String::new(), Some(report))
             }
-            Err(e) => (NOT_GRADED.to_string(), format!("{e:#}"), None),
+            Err(e) => (SubmissionStatus::NotGraded, format!("{e:#}"), None),
         };
         StudentResult {
             student: built.student,
@@ -583,7 +558,7 @@ impl ClassRun<'_> {
     fn save(&self, result: &StudentResult) -> anyhow::Result<()> {
         let file = self.result_file(&result.student);
         if let Some(report) = &result.report {
-            let shown = feedback::redact(report, self.feedback);
+            let shown = redact(report, self.feedback);
             crate::atomic_file::write(
                 &file.with_extension("txt"),
                 crate::grade::report::text(&shown, crate::grade::report::Detail::Verbose)
@@ -695,7 +670,11 @@ pub fn csv(results: &[StudentResult], entries: &[String]) -> anyhow::Result<Stri
             .report
             .as_ref()
             .map_or((0.0, 0.0), |rep| (rep.score, rep.max_score));
-        row.extend([format_points(total), format_points(max), r.status.clone()]);
+        row.extend([
+            format_points(total),
+            format_points(max),
+            r.status.to_string(),
+        ]);
         rows.push(row);
     }
     gradebook::write(rows)
@@ -712,16 +691,17 @@ fn check_rows(results: &[StudentResult], entries: &[String]) -> Vec<item_analysi
 /// submissions that failed it.
 pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
     let graded: Vec<&GradeReport> = results.iter().filter_map(|r| r.report.as_ref()).collect();
-    let count_status = |status: &str| results.iter().filter(|r| r.status == status).count();
+    let count_status =
+        |status: SubmissionStatus| results.iter().filter(|r| r.status == status).count();
     let mut s = format!(
         "# Class summary\n\n{} submissions, {} graded, {} build errors (0 points), {} not \
          graded.\n\n",
         results.len(),
         graded.len(),
-        count_status(BUILD_ERROR),
-        count_status(NOT_GRADED)
+        count_status(SubmissionStatus::BuildError),
+        count_status(SubmissionStatus::NotGraded)
     );
-    if count_status(NOT_GRADED) > 0 {
+    if count_status(SubmissionStatus::NotGraded) > 0 {
         s += "Not graded means the grading machinery failed, not the submission: the same \
               command grades these again.\n\n";
     }
@@ -842,7 +822,7 @@ mod tests {
         let results = vec![
             StudentResult {
                 student: "ann, b".into(),
-                status: "graded".into(),
+                status: SubmissionStatus::Graded,
                 message: String::new(),
                 taken: vec![],
                 ignored: vec![],
@@ -851,7 +831,7 @@ mod tests {
             },
             StudentResult {
                 student: "cy".into(),
-                status: "not graded".into(),
+                status: SubmissionStatus::NotGraded,
                 message: "the submission did not build".into(),
                 taken: vec![],
                 ignored: vec![],

@@ -13,7 +13,7 @@
 //! Submission names are rarely the gradebook's ids, so a class list ([`Roster`]) can map
 //! them: the gradebook's own CSV export serves, or any CSV with a header.
 
-use super::class::{BUILD_ERROR, StudentResult};
+use super::student_result::{StudentResult, SubmissionStatus};
 use crate::grade::verdict::{format_points, total};
 use anyhow::Context;
 use std::collections::BTreeMap;
@@ -120,7 +120,7 @@ impl Roster {
 fn points(result: &StudentResult, entry: &str) -> Option<f64> {
     match &result.report {
         Some(report) => Some(report.task(entry).map_or(0.0, |t| t.points)),
-        None if result.status == BUILD_ERROR => Some(0.0),
+        None if result.status == SubmissionStatus::BuildError => Some(0.0),
         None => None,
     }
 }
@@ -280,7 +280,7 @@ mod tests {
     use super::*;
     use crate::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
 
-    fn result(student: &str, status: &str, points: Option<f64>) -> StudentResult {
+    fn result(student: &str, status: SubmissionStatus, points: Option<f64>) -> StudentResult {
         let report = points.map(|p| {
             let task = TaskOutcome {
                 task: "reflect".into(),
@@ -295,7 +295,7 @@ mod tests {
         });
         StudentResult {
             student: student.into(),
-            status: status.into(),
+            status,
             message: String::new(),
             taken: Vec::new(),
             ignored: Vec::new(),
@@ -306,9 +306,9 @@ mod tests {
 
     fn class() -> Vec<StudentResult> {
         vec![
-            result("ann", "graded", Some(2.5)),
-            result("bo", BUILD_ERROR, None),
-            result("cy", "not graded", None),
+            result("ann", SubmissionStatus::Graded, Some(2.5)),
+            result("bo", SubmissionStatus::BuildError, None),
+            result("cy", SubmissionStatus::NotGraded, None),
         ]
     }
 

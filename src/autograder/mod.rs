@@ -13,6 +13,7 @@ pub mod package;
 pub mod regrade;
 pub mod run;
 pub mod schema;
+pub mod student_result;
 pub mod submission;
 
 use crate::worksheet::TaskId;

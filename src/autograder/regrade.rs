@@ -3,7 +3,7 @@
 //! check by check, and a class summary. A new result that is not a grade (the grading
 //! machinery failed) never replaces a saved grade: it is listed as kept.
 
-use super::class::{NOT_GRADED, StudentResult};
+use super::student_result::{StudentResult, SubmissionStatus};
 use crate::grade::verdict::{GradeReport, format_points};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -15,7 +15,7 @@ pub struct StudentChange {
     /// The student.
     pub student: String,
     /// The status before and after (`graded`, `build error`, `not graded`).
-    pub status: (String, String),
+    pub status: (SubmissionStatus, SubmissionStatus),
     /// The score before and after (none without a grade).
     pub score: (Option<f64>, Option<f64>),
     /// The entries whose points or checks changed.
@@ -80,7 +80,9 @@ fn verdicts(report: Option<&GradeReport>) -> BTreeMap<String, (f64, BTreeMap<Str
 
 /// What changed from the saved result `old` to the new one, `new`.
 pub fn compare(old: &StudentResult, new: &StudentResult) -> StudentChange {
-    let kept = (new.status == NOT_GRADED && old.status != NOT_GRADED).then(|| new.message.clone());
+    let kept = (new.status == SubmissionStatus::NotGraded
+        && old.status != SubmissionStatus::NotGraded)
+        .then(|| new.message.clone());
     let (before, after) = (verdicts(old.report.as_ref()), verdicts(new.report.as_ref()));
     let mut entries = Vec::new();
     if kept.is_none() {
@@ -114,7 +116,7 @@ pub fn compare(old: &StudentResult, new: &StudentResult) -> StudentChange {
     }
     StudentChange {
         student: new.student.clone(),
-        status: (old.status.clone(), new.status.clone()),
+        status: (old.status, new.status),
         score: (
             old.report.as_ref().map(|r| r.score),
             new.report.as_ref().map(|r| r.score),
@@ -184,7 +186,10 @@ pub fn report(changes: &[StudentChange]) -> String {
         let mut heading = format!("## {}\n\n", change.student)
             + &old_new(points(change.score.0), points(change.score.1));
         if change.status.0 != change.status.1 {
-            heading += &format!(" ({})", old_new(&change.status.0, &change.status.1));
+            heading += &format!(
+                " ({})",
+                old_new(change.status.0.label(), change.status.1.label())
+            );
         }
         if change.variant.0 != change.variant.1 && change.kept.is_none() {
             let name = |v: &Option<String>| v.clone().unwrap_or_else(|| "none".into());
@@ -223,7 +228,7 @@ mod tests {
     use super::*;
     use crate::grade::verdict::{CheckKind, CheckResult, TaskOutcome, TaskStatus};
 
-    fn result(status: &str, smith_g1: Option<(f64, bool)>) -> StudentResult {
+    fn result(status: SubmissionStatus, smith_g1: Option<(f64, bool)>) -> StudentResult {
         let report = smith_g1.map(|(points, passed)| {
             let mut check = CheckResult::new("values", CheckKind::Values);
             check.passed = passed;
@@ -240,8 +245,8 @@ mod tests {
         });
         StudentResult {
             student: "ada".into(),
-            status: status.into(),
-            message: if status == NOT_GRADED {
+            status,
+            message: if status == SubmissionStatus::NotGraded {
                 "the worker binary is missing".into()
             } else {
                 String::new()
@@ -256,8 +261,8 @@ mod tests {
     #[test]
     fn a_changed_verdict_is_listed_with_old_and_new_points() {
         let change = compare(
-            &result("graded", Some((6.0, true))),
-            &result("graded", Some((0.0, false))),
+            &result(SubmissionStatus::Graded, Some((6.0, true))),
+            &result(SubmissionStatus::Graded, Some((0.0, false))),
         );
         assert!(!change.unchanged());
         assert_eq!(change.entries.len(), 1);
@@ -274,9 +279,9 @@ mod tests {
 
     #[test]
     fn the_same_grade_is_no_change_and_a_failed_regrade_keeps_the_saved_grade() {
-        let graded = result("graded", Some((6.0, true)));
+        let graded = result(SubmissionStatus::Graded, Some((6.0, true)));
         assert!(compare(&graded, &graded.clone()).unchanged());
-        let failed = compare(&graded, &result(NOT_GRADED, None));
+        let failed = compare(&graded, &result(SubmissionStatus::NotGraded, None));
         assert_eq!(failed.kept.as_deref(), Some("the worker binary is missing"));
         assert!(failed.entries.is_empty());
         let text = report(&[failed]);

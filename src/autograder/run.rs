@@ -8,8 +8,8 @@
 use super::config::Config;
 use super::schema::{Service, validate};
 use super::submission::{self, Intake};
-use crate::grade::feedback;
 use crate::grade::isolation::Launcher;
+use crate::grade::report::redact::redact;
 use crate::grade::report::{self, gradescope, prairielearn};
 use crate::grade::runner::{GradeOptions, grade};
 use crate::grade::student_build::StudentBuild;
@@ -138,7 +138,7 @@ impl Submission<'_> {
         // The grader's log (hidden from students) in full; the results as the course shows
         // them.
         println!("{}", report::text(&report, report::Detail::Verbose));
-        let report = feedback::redact(&report, self.config.feedback);
+        let report = redact(&report, self.config.feedback);
         Ok(Graded { intake, report })
     }
 

@@ -110,7 +110,7 @@ fn load_study<T: Tasks + Clone + Send + 'static>(
 /// Runs the study, writes the CSV and the plot, and prints the slope table.
 pub fn run(args: Args) -> anyhow::Result<()> {
     if args.implementation != ImplChoice::Reference && !crate::implementation::links_student() {
-        return super::student_side::delegate();
+        return super::delegate::delegate();
     }
     match args.implementation {
         ImplChoice::Student => {

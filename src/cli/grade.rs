@@ -1,8 +1,9 @@
 use crate::grade::calibration;
 use crate::grade::credit::Credit;
-use crate::grade::feedback::{self, Feedback};
+use crate::grade::feedback::Feedback;
 use crate::grade::history;
 use crate::grade::isolation::Launcher;
+use crate::grade::report::redact::redact;
 use crate::grade::report::{self, Format};
 use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::BuildRecord;
@@ -148,7 +149,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let mut report = grade(&options, &launcher)?;
     report.variant = variant.map(|v| v.id);
-    let shown = feedback::redact(&report, args.feedback);
+    let shown = redact(&report, args.feedback);
     if let Some(dir) = &args.html {
         let page = report::write_html(&shown, dir)?;
         eprintln!("HTML report: {}", page.display());

@@ -5,6 +5,7 @@
 
 mod autograder;
 mod converge;
+mod delegate;
 mod grade;
 mod grade_class;
 mod handout;
@@ -113,7 +114,7 @@ pub fn main() -> std::process::ExitCode {
 pub fn finish(result: anyhow::Result<()>) -> std::process::ExitCode {
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => match e.downcast_ref::<student_side::WorkerExit>() {
+        Err(e) => match e.downcast_ref::<delegate::WorkerExit>() {
             Some(exit) => exit.code(),
             None => {
                 eprintln!("error: {e:#}");

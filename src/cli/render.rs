@@ -181,7 +181,7 @@ pub fn run(args: Args) -> Result<()> {
     // Student code runs in `pbrlab-student`: the scene is checked here first, so that a
     // mistake in it is reported before any build.
     if choice != ImplChoice::Reference && !crate::implementation::links_student() {
-        return super::student_side::delegate();
+        return super::delegate::delegate();
     }
     for w in scene.warnings() {
         eprintln!("warning: {w}");

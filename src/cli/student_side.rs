@@ -1,7 +1,7 @@
 //! The commands that run student code in their own process: a render (`--impl student` or
 //! `mixed`) and a convergence study of it. The `pbrlab` binary links no student code, so it
 //! hands such a command line to `pbrlab-student` (package `src/worker/`), which links the
-//! student's crate: [`delegate`] rebuilds it when an exercise file is newer
+//! student's crate: `delegate` (`src/cli/delegate.rs`) rebuilds it when an exercise file is newer
 //! ([`super::rebuild`]) and runs it with the same arguments; its `main` calls [`main`],
 //! which takes the reference (for a mix, or a study's ground truth) from its compiled
 //! libraries, as a grading worker does, and enters the sandbox before the student's code
@@ -13,48 +13,13 @@ use crate::grade::references;
 use crate::grade::worker::{ImplSpec, with_references};
 use crate::implementation::{ImplChoice, Implementations, install};
 use crate::worksheet::TaskFns;
-use anyhow::{Context, bail};
+use anyhow::bail;
 use clap::Parser;
 use std::ffi::OsString;
-use std::process::ExitStatus;
-
-/// `pbrlab-student` ran the command and it failed: it has printed its error, and `pbrlab`
-/// exits with its status.
-#[derive(Debug, thiserror::Error)]
-#[error("pbrlab-student {0}")]
-pub struct WorkerExit(pub ExitStatus);
-
-impl WorkerExit {
-    /// The exit code to pass on (1 for a process killed by a signal).
-    pub fn code(&self) -> std::process::ExitCode {
-        let code = self
-            .0
-            .code()
-            .and_then(|c| u8::try_from(c).ok())
-            .unwrap_or(1);
-        std::process::ExitCode::from(code.max(1))
-    }
-}
-
-/// In `pbrlab`: runs this process's command line in `pbrlab-student` (rebuilt first when
-/// stale), which prints to the same terminal.
-pub fn delegate() -> anyhow::Result<()> {
-    let student = super::rebuild::ensure_student_binaries()?.student;
-    let status = std::process::Command::new(&student)
-        .env(super::INVOCATION, super::invocation())
-        .args(std::env::args_os().skip(1))
-        .status()
-        .with_context(|| format!("running {}", student.display()))?;
-    if status.success() {
-        Ok(())
-    } else {
-        Err(WorkerExit(status).into())
-    }
-}
 
 /// In `pbrlab-student`: runs the command line `args` (`pbrlab`'s, without the program name)
 /// with `student`, the student's table this binary links. Only the commands that
-/// [`delegate`] run here.
+/// `delegate` hands on run here.
 pub fn main(student: TaskFns, args: impl Iterator<Item = OsString>) -> std::process::ExitCode {
     let cli = Cli::parse_from(std::iter::once(OsString::from("pbrlab")).chain(args));
     super::finish(run(student, cli))

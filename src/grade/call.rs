@@ -1,7 +1,7 @@
 //! One call of a task function with concrete inputs: what a value case stores, evaluates
 //! and prints in messages.
 
-use super::output::{IntoOutput, Output, fmt_num};
+use super::output::{IntoOutput, Output, fmt_vec};
 use super::test_brdf::TestBrdf;
 use crate::bsdf::{KajiyaKayParams, PhongParams};
 use crate::optics::{LayerStack, Slab};
@@ -237,16 +237,6 @@ impl Call {
             }
         }
     }
-}
-
-/// A vector for messages: `(0.6, -0.8, 0)`.
-pub fn fmt_vec(v: Vec3) -> String {
-    format!(
-        "({}, {}, {})",
-        fmt_num(v.x as f64),
-        fmt_num(v.y as f64),
-        fmt_num(v.z as f64)
-    )
 }
 
 /// An input exactly as the function received it (the shortest text that reads back to the

@@ -23,7 +23,7 @@ pub struct ValueCase {
     pub expected: Output,
     /// The region of the task's declared domain the case lies in (`cos θ of w: on the
     /// horizon`, `alpha = 0`, `the interior`, `the worked cases`,
-    /// [`crate::grade::catalogue::region`]): a values check's credit is split over its
+    /// [`crate::grade::value_cases::region`]): a values check's credit is split over its
     /// regions ([`crate::grade::credit::Credit::PerRegion`]). Empty where not declared.
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub region: String,
@@ -38,7 +38,7 @@ pub enum Rule {
     /// A measured quantity only judged on which side of `threshold` it falls (for Monte
     /// Carlo answers whose exact value depends on the random numbers a student draws; one
     /// the contract fixes whatever is drawn is judged by value instead, see
-    /// [`crate::grade::catalogue::evaluate`]).
+    /// [`crate::grade::value_cases::evaluate`]).
     SameSide {
         /// The dividing value.
         threshold: f64,

@@ -1,35 +1,28 @@
 //! Every check of one task, run on one implementation: the values, sampling, estimator and
 //! stability checks that fit the task, with the task's points split between them.
 
-use super::call::Call;
 use super::call::SampleCall;
 use super::case::ValueCase;
-use super::catalogue::{self, EstimatorSpec};
+use super::catalogue;
 use super::estimator;
+use super::estimator::EstimatorSpec;
 use super::expected::TaskData;
-use super::image_check::ImageStats;
+use super::measure::{SAMPLING_SAMPLES, run_task};
 use super::output::fmt_num;
-use super::sampling::{self, HemisphereBins, SampleCounts, SamplingFailure, SamplingTarget};
+use super::sampling::{self, SamplingFailure, SamplingTarget};
 use super::stability;
 use super::stats::sidak;
 use super::values;
-use super::values::ValueOutputs;
-use super::variance_pair::{self, VarianceOutputs, Variances};
+use super::variance_check;
 use super::verdict::{CheckKind, CheckResult, Detail, TaskStatus, Visibility};
-use crate::panics::{self, Panic};
-use crate::sampling::Sampler;
-use crate::stability::Value;
+use super::wire::{EstimateOutputs, Raw, SampleOutputs, SamplingSetup, ValueCalls, WorkerInput};
 use crate::worksheet::{TaskId, Tasks};
 use serde::{Deserialize, Serialize};
-use std::time::Instant;
 
 /// The declared false-failure rate of each task's statistical checks together: a correct
 /// implementation fails a task's sampling and estimator checks with this probability
 /// (Šidák-corrected over the sub-tests).
 pub const TASK_ALPHA: f64 = 1e-3;
-
-/// Samples per sampling sub-test.
-pub const SAMPLING_SAMPLES: usize = 200_000;
 
 /// Relative weights of the check kinds within a task (split evenly between a kind's
 /// sub-tests).
@@ -120,130 +113,6 @@ pub const VALUES: &str = "values";
 /// The name of the values check on the hidden cases.
 const HIDDEN_VALUES: &str = "values (hidden cases)";
 
-/// The calls of one values check, without their expected outputs.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ValueCalls {
-    /// The check's name.
-    pub check: String,
-    /// The calls, in order.
-    pub calls: Vec<Call>,
-}
-
-/// A sampler to draw from, and the cells to bin its directions in: no reference density.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SamplingSetup {
-    /// Which sampler, with which parameters.
-    pub call: SampleCall,
-    /// The cells.
-    pub bins: HemisphereBins,
-    /// True when the sampler may return no direction.
-    pub may_reject: bool,
-}
-
-/// What a worker needs to run a task's checks: no expected value, no reference density.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct WorkerInput {
-    /// The calls of each values check.
-    pub values: Vec<ValueCalls>,
-    /// The samplers of the sampling checks.
-    pub sampling: Vec<SamplingSetup>,
-    /// Seed of the statistical checks.
-    pub seed: u64,
-    /// Run the value calls and nothing else (the worker of the hidden cases).
-    #[serde(default)]
-    pub values_only: bool,
-    /// Run the estimators and nothing else (the reference's run beside the student's, for
-    /// the time comparison, in a worker of its own).
-    #[serde(default)]
-    pub estimators_only: bool,
-}
-
-/// What one sampling check's sampler produced in a worker: its binned directions, the
-/// first invalid sample, or the panic that stopped it.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SampleOutputs {
-    /// Which of the task's sampling checks, in order.
-    pub index: usize,
-    /// The counts, or the invalid sample described.
-    pub outcome: Result<Result<SampleCounts, String>, Panic>,
-    /// Seconds the sampling took.
-    pub seconds: f64,
-}
-
-/// A worker's raw output for the grader to judge: measurements only, never a verdict.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "raw", rename_all = "snake_case")]
-pub enum Raw {
-    /// The outputs of a values check.
-    Values(ValueOutputs),
-    /// The samples of a sampling check.
-    Samples(SampleOutputs),
-    /// The estimates of an estimator check.
-    Estimate(EstimateOutputs),
-    /// The variances of the two estimators of a variance pair.
-    Variances(VarianceOutputs),
-    /// What the task returned on one stability case.
-    Stability(StabilityOutput),
-    /// A render of a graded scene.
-    Image(ImageOutputs),
-}
-
-/// What the task returned on one stability case, or the panic that stopped it.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct StabilityOutput {
-    /// The case's name (`smith_g1/alpha_zero`).
-    pub case: String,
-    /// The value returned, or the panic.
-    pub outcome: Result<Value, Panic>,
-    /// Seconds the call took.
-    pub seconds: f64,
-}
-
-/// A graded scene's render made in a worker: its per-pixel mean and variance, or why there
-/// is none.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ImageOutputs {
-    /// The scene.
-    pub scene: String,
-    /// The render, the scene's load error, or the panic that stopped the render.
-    pub outcome: Result<Result<Rendered, String>, Panic>,
-    /// Seconds the render took.
-    pub seconds: f64,
-}
-
-/// A render's statistics and the samples the renderer had to drop.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Rendered {
-    /// Mean and variance of the mean per pixel-channel.
-    pub stats: ImageStats,
-    /// Samples that were NaN, infinite or negative and were dropped.
-    pub rejected: u64,
-}
-
-/// What one estimator check measured in a worker, or why it could not.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct EstimateOutputs {
-    /// Which of the task's estimators, in order.
-    pub index: usize,
-    /// The measured runs, a refused or non-finite estimate, or the panic that stopped it.
-    pub outcome: Result<Result<estimator::Measured, String>, Panic>,
-    /// Seconds the estimates took.
-    pub seconds: f64,
-}
-
-/// What grading a task reports as it goes, so that a worker that dies part-way through can
-/// say where, and the raw outputs ready before are not lost.
-#[derive(Debug)]
-pub enum Progress<'a> {
-    /// A check (or one stability case within the stability check) is about to run.
-    Starting(&'a str),
-    /// Raw outputs are ready for the grader.
-    Raw(&'a Raw),
-}
-
-/// Where grading reports its [`Progress`].
-pub type ProgressSink<'s> = dyn FnMut(Progress<'_>) + 's;
-
 /// Runs every check of `task` on `t` in this process: [`run_task`] then [`judge_task`].
 pub fn grade_task<T: Tasks>(t: &T, task: TaskId, input: &TaskInput) -> Vec<CheckResult> {
     let raw: Vec<Raw> = input
@@ -326,7 +195,7 @@ fn judge_all(task: TaskId, input: &TaskInput, raw: &[Raw]) -> Vec<(CheckResult, 
     for (index, pair) in catalogue::variance_pairs(task, t).iter().enumerate() {
         let name = pair.name();
         judged.push(from_raw(raw, &name, CheckKind::Estimator, |r| match r {
-            Raw::Variances(v) if v.index == index => Some(variance_pair::judge(
+            Raw::Variances(v) if v.index == index => Some(variance_check::judge(
                 &name,
                 pair.bound,
                 pair.first.analytic,
@@ -365,138 +234,6 @@ fn missing(name: &str, kind: CheckKind) -> CheckResult {
     result.fail_own(message);
     result.finish();
     result
-}
-
-/// The worker's half: evaluates the value calls of `input` and runs the samplers,
-/// estimators, variance pairs and stability cases of `task` on `t`, returning their raw
-/// outputs only (the grader judges them), and telling `progress` before each step runs and
-/// when its output is ready.
-pub fn run_task<T: Tasks>(
-    t: &T,
-    task: TaskId,
-    input: &WorkerInput,
-    progress: &mut ProgressSink<'_>,
-) -> Vec<Raw> {
-    let mut raw = Vec::new();
-    if input.estimators_only {
-        run_estimators(t, task, input, progress, &mut raw);
-        return raw;
-    }
-    for calls in &input.values {
-        progress(Progress::Starting(&calls.check));
-        let outputs = Raw::Values(values::evaluate(&calls.check, &calls.calls, t));
-        progress(Progress::Raw(&outputs));
-        raw.push(outputs);
-    }
-    if input.values_only {
-        return raw;
-    }
-    for (index, setup) in input.sampling.iter().enumerate() {
-        let name = format!("sampling: {}", setup.call);
-        raw.push(measure_raw(&name, progress, || {
-            let mut sampler = Sampler::new(input.seed, 100 + index as u64);
-            let outcome = panics::catch(|| {
-                sampling::draw(
-                    setup.bins,
-                    setup.may_reject,
-                    SAMPLING_SAMPLES,
-                    &mut sampler,
-                    |u| setup.call.sample(t, u),
-                )
-            });
-            |seconds| {
-                Raw::Samples(SampleOutputs {
-                    index,
-                    outcome,
-                    seconds,
-                })
-            }
-        }));
-    }
-    run_estimators(t, task, input, progress, &mut raw);
-    for (index, mut pair) in catalogue::variance_pairs(task, t).into_iter().enumerate() {
-        raw.push(measure_raw(&pair.name(), progress, || {
-            let outcome = panics::catch(|| {
-                estimator::variances(
-                    pair.first.samples,
-                    (input.seed, 300 + index as u64),
-                    pair.first.estimate.as_mut(),
-                    pair.second.estimate.as_mut(),
-                    pair.first.analytic,
-                )
-                .map(|(first, second)| Variances { first, second })
-            });
-            |seconds| {
-                Raw::Variances(VarianceOutputs {
-                    index,
-                    outcome,
-                    seconds,
-                })
-            }
-        }));
-    }
-    for case in crate::stability::cases_for::<T>(task) {
-        raw.push(measure_raw(
-            &format!("stability: {}", case.name),
-            progress,
-            || {
-                let outcome = panics::catch(|| (case.eval)(t));
-                |seconds| {
-                    Raw::Stability(StabilityOutput {
-                        case: case.name.into(),
-                        outcome,
-                        seconds,
-                    })
-                }
-            },
-        ));
-    }
-    raw
-}
-
-/// Runs each of `task`'s estimators with `t`, adding their outputs to `raw`.
-fn run_estimators<T: Tasks>(
-    t: &T,
-    task: TaskId,
-    input: &WorkerInput,
-    progress: &mut ProgressSink<'_>,
-    raw: &mut Vec<Raw>,
-) {
-    for (index, mut spec) in catalogue::estimators(task, t).into_iter().enumerate() {
-        let name = format!("estimator: {}", spec.name);
-        raw.push(measure_raw(&name, progress, || {
-            let outcome = panics::catch(|| {
-                estimator::measure(
-                    spec.analytic,
-                    spec.samples,
-                    (input.seed, 200 + index as u64),
-                    spec.estimate.as_mut(),
-                )
-            });
-            |seconds| {
-                Raw::Estimate(EstimateOutputs {
-                    index,
-                    outcome,
-                    seconds,
-                })
-            }
-        }));
-    }
-}
-
-/// Runs `measure` as the step `name`, times it, and reports the raw output it makes (from
-/// the seconds taken) to `progress`.
-fn measure_raw<F: FnOnce(f64) -> Raw>(
-    name: &str,
-    progress: &mut ProgressSink<'_>,
-    measure: impl FnOnce() -> F,
-) -> Raw {
-    progress(Progress::Starting(name));
-    let start = Instant::now();
-    let make = measure();
-    let raw = make(start.elapsed().as_secs_f64());
-    progress(Progress::Raw(&raw));
-    raw
 }
 
 /// Gives each kind its weight, split between the kind's checks.

@@ -244,6 +244,29 @@ fn run(
     ))
 }
 
+/// How an estimator of radiance (RGB) turns it into one number: a weighted sum whose
+/// weights differ per channel and sum to 1. A grey radiance keeps its value, and in a
+/// coloured scene code that mixes up channels (uses one channel for all, or a scalar
+/// where the contract has a colour) changes the mean.
+pub const CHANNEL_WEIGHTS: glam::DVec3 = glam::DVec3::new(1.0 / 7.0, 2.0 / 7.0, 4.0 / 7.0);
+
+/// An estimator with a known mean, built on an implementation's task functions.
+pub struct EstimatorSpec<'a> {
+    /// What it estimates.
+    pub name: String,
+    /// The analytic value of its mean.
+    pub analytic: f64,
+    /// How many estimates the check draws.
+    pub samples: usize,
+    /// One estimate per call.
+    pub estimate: Box<Estimator<'a>>,
+}
+
+/// A colour in the scene format, for the grader's own scenes.
+pub(crate) fn yaml_rgb(c: glam::DVec3) -> String {
+    format!("[{}, {}, {}]", c.x, c.y, c.z)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

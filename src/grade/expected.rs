@@ -100,8 +100,8 @@ pub fn load_all() -> anyhow::Result<BTreeMap<TaskId, TaskData>> {
 /// integrated from the reference pdf.
 #[cfg(feature = "solutions")]
 pub fn generate(task: TaskId) -> anyhow::Result<TaskData> {
-    let values = super::catalogue::evaluate(
-        &super::catalogue::public_inputs(task),
+    let values = super::value_cases::evaluate(
+        &super::value_cases::public_inputs(task),
         crate::implementation::reference(),
     )
     .with_context(|| format!("reference outputs of {task}"))?;

@@ -3,9 +3,7 @@
 //! Mitsuba's test suite). A render passes when at least [`PASS_FRACTION`] of its
 //! pixel-channels pass; a false-colour image shows where and in which direction it differs.
 
-use super::verdict::{CheckKind, CheckResult, Detail};
 use serde::{Deserialize, Serialize};
-use std::path::Path;
 
 /// A Monte Carlo render: the per-pixel mean and the variance of that mean, linear RGB,
 /// row-major, 3 floats per pixel.
@@ -200,72 +198,12 @@ impl ImageDetail {
     }
 }
 
-/// The image check of one render: compares `student` with `reference` and, given a report
-/// directory, writes its pictures and values there for the HTML page ([`super::report::images`]).
-pub fn run(
-    name: &str,
-    student: &ImageStats,
-    reference: &ImageStats,
-    report_dir: Option<&Path>,
-) -> CheckResult {
-    let start = std::time::Instant::now();
-    let mut result = CheckResult::new(format!("image: {name}"), CheckKind::Image);
-    result.total = 1;
-    result.alpha = ALPHA;
-    match compare(name, student, reference) {
-        // The sizes, which the scene file gives.
-        Err(message) => result.fail_own(message),
-        Ok((mut detail, z)) => {
-            if let Some(dir) = report_dir {
-                match super::report::images::write_pictures(dir, name, student, reference, &z) {
-                    Ok(files) => detail.files = files,
-                    Err(e) => result.summary = format!("(images not written: {e:#}) "),
-                }
-            }
-            result.summary += &detail.describe();
-            for violation in detail.violations() {
-                result.fail(
-                    violation,
-                    format!("{name}: the render does not match the reference within noise"),
-                );
-            }
-            result.detail = Some(Detail::Image(detail));
-        }
-    }
-    result.finish();
-    result.seconds = start.elapsed().as_secs_f64();
-    result
-}
-
-/// A false-colour picture of per-pixel-channel z-scores (3 per pixel): for each pixel the
-/// channel with the largest |z|, blue where the student is too dark, red where too bright,
-/// white where they agree, saturating at |z| = 2 `Z_CRITICAL`; non-finite pixels are green.
-/// Returns 8-bit RGB, row-major.
-pub fn false_colour(z: &[f64]) -> Vec<u8> {
-    z.chunks(3)
-        .flat_map(|px| {
-            let zi = px
-                .iter()
-                .copied()
-                .max_by(|a, b| a.abs().total_cmp(&b.abs()))
-                .unwrap_or(0.0);
-            if !zi.is_finite() {
-                return [0, 200, 0];
-            }
-            let t = (zi.abs() / (2.0 * Z_CRITICAL)).min(1.0);
-            let fade = (255.0 * (1.0 - t)) as u8;
-            if zi > 0.0 {
-                [255, fade, fade]
-            } else {
-                [fade, fade, 255]
-            }
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grade::render_check::image_result as run;
+    use crate::grade::report::images::false_colour;
+    use crate::grade::verdict::Detail;
     use crate::sampling::Sampler;
 
     fn render(width: usize, height: usize, value: f32, sigma: f32, seed: u64) -> ImageStats {

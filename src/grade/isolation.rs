@@ -5,8 +5,8 @@
 //! replaced, not fatal), each cut at [`LINE_LIMIT`], and only lines with the job's nonce
 //! are read as records.
 
-use super::checks::Raw;
 use super::sandbox::{Policy, Protections};
+use super::wire::Raw;
 use super::worker::{
     Delivery, Job, PEAK_MARKER, RAW_MARKER, RESULT_MARKER, Record, STARTED_MARKER, STEP_MARKER,
 };

@@ -255,6 +255,16 @@ impl fmt::Display for Output {
     }
 }
 
+/// A vector for messages: `(0.6, -0.8, 0)`.
+pub fn fmt_vec(v: Vec3) -> String {
+    format!(
+        "({}, {}, {})",
+        fmt_num(v.x as f64),
+        fmt_num(v.y as f64),
+        fmt_num(v.z as f64)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

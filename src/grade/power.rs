@@ -15,9 +15,11 @@
 //! counts), with seeds `0..seeds` in place of the grade's seed.
 
 use super::catalogue;
-use super::checks::{SAMPLING_SAMPLES, statistical_alpha};
+use super::checks::statistical_alpha;
 use super::estimator::{Measured, judge, measure};
-use super::renders::{RENDER_CHECKS, STUDENT_SPP, load, render_stats, stored_reference};
+use super::measure::SAMPLING_SAMPLES;
+use super::render_check::stored_reference;
+use super::renders::{RENDER_CHECKS, STUDENT_SPP, load, render_stats};
 use super::sampling::{compare, draw};
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
@@ -55,16 +57,6 @@ impl std::fmt::Display for Injection {
             Injection::RenderBias => "render, bias",
         })
     }
-}
-
-/// What a task's statistical checks are declared to catch, each in at least [`CAUGHT`] of
-/// gradings: an error of this relative size (one of [`LEVELS`]) or larger.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Declared {
-    /// The smallest relative bias of every estimate that the estimator checks catch.
-    pub estimator_bias: Option<f64>,
-    /// The smallest distortion of the sampler that the sampling checks catch.
-    pub sampler_distortion: Option<f64>,
 }
 
 /// One row of the power table: a task's (or a scene's) checks of one kind.

@@ -2,17 +2,15 @@
 //! task, run one isolated worker per task (in parallel), and assemble the report.
 
 use super::call::Call;
-use super::checks::{
-    EstimateOutputs, Raw, TaskInput, VALUES, ValueCalls, WorkerInput, judge_finished, judge_task,
-    score,
-};
+use super::checks::{TaskInput, VALUES, judge_finished, judge_task, score};
 use super::credit::Credit;
 use super::estimator::EstimatorRun;
 use super::expected::{self, TaskData};
 use super::isolation::{self, Launcher};
 use super::shrink;
-use super::values::ValueOutputs;
 use super::verdict::{CheckResult, GradeReport, TaskOutcome, TaskStatus, Visibility};
+use super::wire::ValueOutputs;
+use super::wire::{EstimateOutputs, Raw, ValueCalls, WorkerInput};
 use super::worker::{ImplSpec, Job, JobKind, Record};
 use crate::implementation::ImplChoice;
 use crate::task_set::TaskSet;
@@ -98,7 +96,7 @@ pub fn prepare(options: &GradeOptions) -> anyhow::Result<BTreeMap<TaskId, TaskIn
 
 #[cfg(feature = "solutions")]
 fn hidden_cases(task: TaskId, seed: u64) -> anyhow::Result<Vec<super::case::ValueCase>> {
-    use super::catalogue::{evaluate, hidden_inputs};
+    use super::value_cases::{evaluate, hidden_inputs};
     evaluate(
         &hidden_inputs(task, seed),
         crate::implementation::reference(),
@@ -617,7 +615,7 @@ fn shrink_run(
     attempted: &[TaskId],
     task: TaskId,
     calls: &[Call],
-) -> Vec<super::values::Evaluated> {
+) -> Vec<super::wire::Evaluated> {
     let Ok(implementation) = spec_for(task, options, attempted) else {
         return Vec::new();
     };
@@ -686,7 +684,7 @@ fn render_outcome(
             Raw::Image(image) => Some(image),
             _ => None,
         });
-        let mut result = super::renders::judge(check.scene, rendered, report_dir);
+        let mut result = super::render_check::judge(check.scene, rendered, report_dir);
         result.weight = 1.0;
         // A render is one statistical test: all or nothing under any policy.
         result.credit = Credit::AllOrNothing.of(&result);

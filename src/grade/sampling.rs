@@ -8,8 +8,8 @@
 //! distribution of the directions matters. Before the χ² test every sample must be a
 //! finite unit vector above the surface.
 
-use super::call::fmt_vec;
 use super::output::fmt_num;
+use super::output::fmt_vec;
 use super::stats::{ChiSquare, chi_square};
 use crate::sampling::Sampler;
 use glam::{Vec2, Vec3};

@@ -10,16 +10,18 @@
 //! inside the range, not on an open boundary, not nearer a boundary than correct code can
 //! resolve), and its expected output is the reference's, with the tolerance of
 //! the case it came from widened by the candidate's own rounding spread, as every drawn case
-//! is ([`super::catalogue::evaluate`]): a shrunk case fails by a clear margin or is not
+//! is ([`super::value_cases::evaluate`]): a shrunk case fails by a clear margin or is not
 //! taken. Only public cases are shrunk (the inputs shown are derived from an input the
 //! student saw), and only where the grader holds the reference (instructor grading and the
 //! packages; the handout names the simplest graded input instead).
 
 use super::call::Call;
 use super::case::{Rule, ValueCase};
-use super::catalogue::{self, CaseInput};
-use super::values::{Evaluated, ValueOutputs, got_of, simplicity};
+use super::case_input::CaseInput;
+use super::catalogue;
+use super::values::{got_of, simplicity};
 use super::verdict::CheckResult;
+use super::wire::{Evaluated, ValueOutputs};
 use crate::worksheet::Tasks;
 use serde_json::Value;
 use std::time::{Duration, Instant};
@@ -261,7 +263,9 @@ pub fn shrink(
                     note: case.note.clone(),
                     drawn: true,
                 };
-                catalogue::evaluate(&[input], reference).ok()?.pop()
+                super::value_cases::evaluate(&[input], reference)
+                    .ok()?
+                    .pop()
             })
             .collect();
         if cases.is_empty() {
@@ -312,7 +316,7 @@ pub fn attach(
     };
     let Shrunk { case, got, problem } = shrunk;
     check.summary += &format!("; shrunk to: {}: {problem}", case.call);
-    if let Some(position) = catalogue::position(&case.call) {
+    if let Some(position) = super::value_cases::position(&case.call) {
         check.summary += &format!(" ({position})");
     }
     check.shrunk = Some((

@@ -4,11 +4,11 @@
 //!
 //! The cases are the catalogue of `pbrlab stability` ([`crate::stability::cases_for`]). The
 //! worker calls each case and sends back what the task returned
-//! ([`super::checks::StabilityOutput`]); the grader judges those values here, so a case
+//! ([`super::wire::StabilityOutput`]); the grader judges those values here, so a case
 //! whose value never came back (the worker hung or crashed on it, or left it out) fails.
 
-use super::checks::Raw;
 use super::verdict::{CheckKind, CheckResult};
+use super::wire::Raw;
 use crate::stability::outcome::judge_output;
 use crate::stability::{Case, Verdict};
 

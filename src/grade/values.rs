@@ -2,51 +2,23 @@
 //! against the reference's outputs.
 //!
 //! In two halves, so the process that runs student code never sees an expected value: a
-//! worker [`evaluate`]s the calls (inputs only) and sends back what each returned; the
-//! grader [`judge`]s those outputs against the expected ones.
+//! worker evaluates the calls (inputs only, [`super::measure::evaluate_values`]) and sends
+//! back what each returned; the grader [`judge`]s those outputs against the expected ones.
 
 use super::call::Call;
 use super::case::{Rule, ValueCase};
+use super::measure::evaluate_values;
 use super::output::{Output, fmt_num};
 use super::tolerance::Error;
 use super::verdict::{CheckKind, CheckResult, RegionTally, Visibility, Worst};
-use crate::panics::{self, Panic};
+use super::wire::{Evaluated, ValueOutputs};
+use crate::panics::Panic;
 use crate::worksheet::Tasks;
-use serde::{Deserialize, Serialize};
-use std::time::Instant;
-
-/// What one call returned: its output, or the panic that stopped it.
-pub type Evaluated = Result<Output, Panic>;
-
-/// The outputs of one values check, as a worker sends them.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ValueOutputs {
-    /// The check's name (`values`, `values (hidden cases)`).
-    pub check: String,
-    /// One per call, in order.
-    pub outputs: Vec<Evaluated>,
-    /// Seconds the calls took.
-    pub seconds: f64,
-}
-
-/// Calls `t` on every call (the worker's half).
-pub fn evaluate(check: &str, calls: &[Call], t: &impl Tasks) -> ValueOutputs {
-    let start = Instant::now();
-    let outputs = calls
-        .iter()
-        .map(|call| panics::catch(|| call.eval(t)))
-        .collect();
-    ValueOutputs {
-        check: check.into(),
-        outputs,
-        seconds: start.elapsed().as_secs_f64(),
-    }
-}
 
 /// Calls `t` on every case and judges each output, in this process.
 pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tasks) -> CheckResult {
     let calls: Vec<Call> = cases.iter().map(|c| c.call.clone()).collect();
-    judge(cases, &evaluate(name, &calls, t), visibility)
+    judge(cases, &evaluate_values(name, &calls, t), visibility)
 }
 
 /// Judges a worker's `outputs` of `cases` (the grader's half); every failure message names
@@ -138,7 +110,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     }
     if let (Some((_, case, problem, _)), Visibility::Visible) = (failing.first(), visibility) {
         result.summary += &format!("; simplest failing input: {}: {problem}", case.call);
-        if let Some(position) = super::catalogue::position(&case.call) {
+        if let Some(position) = super::value_cases::position(&case.call) {
             result.summary += &format!(" ({position})");
         }
     }

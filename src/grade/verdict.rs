@@ -111,7 +111,7 @@ pub struct CheckResult {
 /// The cases of one region of a check ([`CheckResult::regions`]).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RegionTally {
-    /// The region, as [`crate::grade::catalogue::region`] names it.
+    /// The region, as [`crate::grade::value_cases::region`] names it.
     pub name: String,
     /// Cases in it.
     pub total: usize,

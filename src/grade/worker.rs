@@ -9,8 +9,9 @@
 //! judges them. The nonce is a fresh random string the student's code never sees (stdin is
 //! drained first), and a worker that exits without a result line has crashed.
 
-use super::checks::{Progress, ProgressSink, Raw, StabilityOutput, WorkerInput, run_task};
+use super::measure::{Progress, ProgressSink, run_task};
 use super::sandbox::{self, Policy};
+use super::wire::{Raw, StabilityOutput, WorkerInput};
 use crate::panics;
 use crate::worksheet::{TaskId, Tasks};
 use anyhow::anyhow;

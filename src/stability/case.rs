@@ -3,7 +3,7 @@
 use super::expect::{Bound, Expect};
 use super::value::Value;
 use super::verdict::Verdict;
-use crate::grade::checks::StabilityOutput;
+use crate::grade::wire::StabilityOutput;
 use crate::worksheet::TaskId;
 
 /// One stiff or extreme input for one task, with what the task must return there.

@@ -7,7 +7,7 @@ use super::case::Case;
 use super::expect::Expect;
 use super::value::Value;
 use super::verdict::Verdict;
-use crate::grade::checks::StabilityOutput;
+use crate::grade::wire::StabilityOutput;
 use crate::worksheet::TaskId;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;

@@ -12,11 +12,13 @@
 
 use pbrlab::grade::call::Call;
 use pbrlab::grade::case::{Rule, ValueCase};
-use pbrlab::grade::catalogue::{domain, evaluate, hidden_inputs, public_inputs};
+use pbrlab::grade::catalogue::domain;
 use pbrlab::grade::domain::Param;
 use pbrlab::grade::output::Output;
-use pbrlab::grade::values::{ValueOutputs, judge};
+use pbrlab::grade::value_cases::{evaluate, hidden_inputs, public_inputs};
+use pbrlab::grade::values::judge;
 use pbrlab::grade::verdict::Visibility;
+use pbrlab::grade::wire::ValueOutputs;
 use pbrlab::worksheet::{TaskId, Tasks};
 use pbrlab_solutions::TASKS as Reference;
 use std::collections::{BTreeMap, BTreeSet};
@@ -440,7 +442,7 @@ fn a_failing_value_check_names_its_simplest_and_its_shrunk_failing_input_in_ever
     // Shrunk as the grader shrinks it, with the student's outputs computed here.
     let cases = &inputs[&task].data.as_ref().expect("stored cases").values;
     let calls: Vec<Call> = cases.iter().map(|c| c.call.clone()).collect();
-    let outputs = pbrlab::grade::values::evaluate("values", &calls, &patch);
+    let outputs = pbrlab::grade::measure::evaluate_values("values", &calls, &patch);
     let values = checks.iter_mut().find(|c| c.name == "values").unwrap();
     let before = values.summary.clone();
     pbrlab::grade::shrink::attach(
@@ -448,7 +450,7 @@ fn a_failing_value_check_names_its_simplest_and_its_shrunk_failing_input_in_ever
         &outputs,
         values,
         &Reference,
-        |calls: &[Call]| pbrlab::grade::values::evaluate("values", calls, &patch).outputs,
+        |calls: &[Call]| pbrlab::grade::measure::evaluate_values("values", calls, &patch).outputs,
         std::time::Duration::from_secs(60),
     );
     assert!(

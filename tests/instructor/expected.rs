@@ -9,9 +9,9 @@
 
 use insta::internals::SnapshotContents;
 use insta::{Comparator, Snapshot};
-use pbrlab::grade::catalogue::public_inputs;
 use pbrlab::grade::expected::generate;
 use pbrlab::grade::tolerance::{Tolerance, json_close};
+use pbrlab::grade::value_cases::public_inputs;
 use pbrlab::worksheet::TaskId;
 
 /// Regenerated data agrees with the stored data when every number is within this.

@@ -3,7 +3,8 @@
 //! the points are the same at every level.
 
 use crate::support::{grade, outcome, variants};
-use pbrlab::grade::feedback::{Feedback, redact};
+use pbrlab::grade::feedback::Feedback;
+use pbrlab::grade::report::redact::redact;
 use pbrlab::grade::report::{Detail, gradescope, prairielearn, text, write_html};
 use pbrlab::grade::runner::{GradeOptions, prepare};
 use pbrlab::grade::verdict::{CheckKind, GradeReport};

@@ -4,9 +4,9 @@
 //! instructor_isolation.rs). Not part of the student handout: it contains correct code.
 
 use crate::support::{grade, graded_tasks, inputs, messages, variants};
-use pbrlab::grade::checks::WorkerInput;
 use pbrlab::grade::runner::student_tasks_for;
 use pbrlab::grade::verdict::TaskStatus;
+use pbrlab::grade::wire::WorkerInput;
 use pbrlab::implementation::ImplChoice;
 use pbrlab::worksheet::TaskId;
 use pbrlab_exercises::TASKS as Student;
@@ -277,7 +277,7 @@ fn failure_messages_name_the_case_input_and_cause() {
 
 #[test]
 fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() {
-    use pbrlab::grade::catalogue::{evaluate, hidden_inputs, public_inputs};
+    use pbrlab::grade::value_cases::{evaluate, hidden_inputs, public_inputs};
     let task = TaskId::FresnelSchlick;
     let public = public_inputs(task);
     let hidden = hidden_inputs(task, 1234);
@@ -315,7 +315,7 @@ fn hidden_cases_are_new_inputs_that_the_reference_passes_and_wrong_code_fails() 
 
 #[test]
 fn a_worker_receives_every_call_and_sampler_but_no_expected_value_or_density() {
-    use pbrlab::grade::catalogue::{evaluate, hidden_inputs};
+    use pbrlab::grade::value_cases::{evaluate, hidden_inputs};
     for (task, mut input) in inputs(1) {
         input.hidden = evaluate(&hidden_inputs(task, 77), &Reference).unwrap();
         let workers = input.for_workers();

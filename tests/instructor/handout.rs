@@ -186,7 +186,7 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
             names.contains(&format!("exercises/{task}.rs")),
             "exercises/{task}.rs"
         );
-        let stored = !pbrlab::grade::catalogue::public_inputs(task).is_empty()
+        let stored = !pbrlab::grade::value_cases::public_inputs(task).is_empty()
             || !pbrlab::grade::catalogue::sampling_setups(task).is_empty();
         let snap = format!("src/tasks/{task}/expected.snap");
         assert_eq!(names.contains(&snap), stored, "{snap}");

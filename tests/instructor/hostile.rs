@@ -366,7 +366,7 @@ fn no_library_or_generated_code_can_be_loaded() {
 #[test]
 fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
     use pbrlab::grade::call::Call;
-    use pbrlab::grade::catalogue::hidden_inputs;
+    use pbrlab::grade::value_cases::hidden_inputs;
     crate::support::install();
     let seed = 4242;
     let launcher = Launcher {
@@ -419,7 +419,7 @@ fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
     };
     // The attack prints α alone: a hidden case shares its α with a public one now and then
     // (α = 0 and 1 are declared special values), and the public one may be shown.
-    let public: Vec<String> = pbrlab::grade::catalogue::public_inputs(TaskId::SmithG1)
+    let public: Vec<String> = pbrlab::grade::value_cases::public_inputs(TaskId::SmithG1)
         .iter()
         .filter_map(|case| leak(&case.call))
         .collect();

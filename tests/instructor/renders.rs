@@ -7,9 +7,9 @@
 //! and commit them: `build.rs` embeds them in the grader. Not part of the student handout.
 
 use pbrlab::grade::image_check;
+use pbrlab::grade::render_check::{from_exr, write_reference};
 use pbrlab::grade::renders::{
-    REFERENCE_SEED, REFERENCE_SPP, RENDER_CHECKS, STUDENT_SPP, from_exr, load, render_stats,
-    write_reference,
+    REFERENCE_SEED, REFERENCE_SPP, RENDER_CHECKS, STUDENT_SPP, load, render_stats,
 };
 use pbrlab_solutions::TASKS as Reference;
 use std::path::Path;
@@ -55,8 +55,8 @@ fn a_wrong_path_tracer_fails_the_render_check() {
         .into_iter()
         .find(|w| w.name == "emission counted twice")
         .expect("the double-counting slip");
-    let result = pbrlab::grade::renders::check(&wrong.patch, "cornell", 7, None);
+    let result = pbrlab::grade::render_check::check(&wrong.patch, "cornell", 7, None);
     assert!(!result.passed, "{}", result.summary);
-    let right = pbrlab::grade::renders::check(&Reference, "cornell", 7, None);
+    let right = pbrlab::grade::render_check::check(&Reference, "cornell", 7, None);
     assert!(right.passed, "{}", right.summary);
 }

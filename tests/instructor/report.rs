@@ -72,7 +72,7 @@ fn failing_report(dir: &Path) -> PathBuf {
             .unwrap_or_else(|| panic!("`{name}` is in the wrong catalogue"))
     };
     let path_tracer = find("emission counted twice");
-    let render = pbrlab::grade::renders::check(&path_tracer.patch, "cornell", 7, Some(dir));
+    let render = pbrlab::grade::render_check::check(&path_tracer.patch, "cornell", 7, Some(dir));
     assert!(!render.passed, "{}", render.summary);
     let sampler = find("uniform samples with the cosine pdf");
     let inputs = inputs(1);

@@ -3,8 +3,8 @@
 //! seeds and hidden cases is measured by the calibration test, whose runs each grade a new
 //! pair of them.)
 
-use pbrlab::grade::catalogue::{evaluate, hidden_inputs};
 use pbrlab::grade::output::Output;
+use pbrlab::grade::value_cases::{evaluate, hidden_inputs};
 use pbrlab::grade::variant::Variant;
 use pbrlab::worksheet::TaskId;
 use pbrlab_solutions::TASKS as Reference;

@@ -6,7 +6,7 @@
 //! horizon, where its BSDF sampling fails.
 
 use super::polygon::{projected_hemisphere_integral, projected_integral, projected_solid_angle};
-use super::yaml_rgb;
+use crate::grade::estimator::yaml_rgb;
 use glam::{DVec3, Vec3};
 use std::f64::consts::PI;
 use std::sync::{Mutex, PoisonError};

@@ -11,8 +11,8 @@
 //! compare with the reference's.
 
 use super::polygon::{projected_hemisphere_integral, projected_integral};
-use super::yaml_rgb;
 use crate::geometry::Hit;
+use crate::grade::estimator::yaml_rgb;
 use crate::scene::Scene;
 use crate::worksheet::Tasks;
 use glam::{DVec3, Vec3};

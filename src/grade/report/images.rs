@@ -2,7 +2,7 @@
 //! false-colour z-map, the map of failed pixel-channels (PNG), and the values behind them
 //! (JSON), which the page reads for the value under the cursor.
 
-use crate::grade::image_check::{ImageStats, Z_CRITICAL, false_colour};
+use crate::grade::image_check::{ImageStats, Z_CRITICAL};
 use anyhow::Context;
 use std::path::Path;
 
@@ -102,6 +102,32 @@ pub fn write_pictures(
     crate::atomic_file::write(&dir.join(&json), serde_json::to_string(&values)?.as_bytes())?;
     names.push(json);
     Ok(names)
+}
+
+/// A false-colour picture of per-pixel-channel z-scores (3 per pixel): for each pixel the
+/// channel with the largest |z|, blue where the student is too dark, red where too bright,
+/// white where they agree, saturating at |z| = 2 `Z_CRITICAL`; non-finite pixels are green.
+/// Returns 8-bit RGB, row-major.
+pub fn false_colour(z: &[f64]) -> Vec<u8> {
+    z.chunks(3)
+        .flat_map(|px| {
+            let zi = px
+                .iter()
+                .copied()
+                .max_by(|a, b| a.abs().total_cmp(&b.abs()))
+                .unwrap_or(0.0);
+            if !zi.is_finite() {
+                return [0, 200, 0];
+            }
+            let t = (zi.abs() / (2.0 * Z_CRITICAL)).min(1.0);
+            let fade = (255.0 * (1.0 - t)) as u8;
+            if zi > 0.0 {
+                [255, fade, fade]
+            } else {
+                [fade, fade, 255]
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]

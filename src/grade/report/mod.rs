@@ -6,6 +6,7 @@ mod html;
 pub mod images;
 pub mod junit;
 pub mod prairielearn;
+pub mod redact;
 mod svg;
 mod text;
 

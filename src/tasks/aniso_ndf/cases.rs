@@ -1,9 +1,10 @@
 //! Cases of `aniso_ndf`, and its normalisation as an estimator.
 
-use crate::grade::catalogue::{CaseInput, EstimatorSpec};
+use crate::grade::case_input::CaseInput;
+use crate::grade::estimator::EstimatorSpec;
 use crate::grade::call::Call;
 use crate::grade::domain::{Draw, Param, anisotropy, cos_z, cosine, ratio, floored_roughness};
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;
 use glam::Vec3;

@@ -1,10 +1,11 @@
 //! Cases of `beckmann_ndf`, and its normalisation as an estimator.
 
-use crate::grade::catalogue::{CaseInput, EstimatorSpec};
+use crate::grade::case_input::CaseInput;
+use crate::grade::estimator::EstimatorSpec;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
 use crate::grade::domain::{Draw, Param, cos_z, cosine, floored_roughness};
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::grade::tolerance::Tolerance;
 use crate::sampling::{Sampler, uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::worksheet::Tasks;

@@ -1,6 +1,6 @@
 //! Cases of `brdf_check`: BRDFs whose plausibility is known, judged by the three verdicts.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;
 use crate::grade::domain::{Draw, Param};

@@ -1,6 +1,6 @@
 //! Cases of `cook_torrance`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::call::Call;
 use crate::grade::domain::{Draw, Param, channel};
 use crate::sampling::Sampler;

@@ -1,10 +1,11 @@
 //! Cases of `cosine_pdf`, and the irradiance estimator built on `cosine_sample`.
 
 use crate::grade::catalogue::polygon::{hits_rectangle, projected_solid_angle};
-use crate::grade::catalogue::{CaseInput, EstimatorSpec};
+use crate::grade::case_input::CaseInput;
+use crate::grade::estimator::EstimatorSpec;
 use crate::grade::call::{Call, SampleCall};
 use crate::grade::domain::{Draw, Param, cos_z, cosine};
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
 use glam::Vec3;
@@ -30,7 +31,7 @@ pub fn fixed() -> Vec<CaseInput> {
         pdf("45°", Vec3::new(0.0, 1.0, 1.0).normalize()),
         pdf("grazing", Vec3::X),
         pdf("below the surface", Vec3::new(0.6, 0.0, -0.8)),
-        crate::grade::catalogue::jacobian_case("the warp follows cosine_pdf", SampleCall::CosineSample),
+        crate::grade::case_input::jacobian_case("the warp follows cosine_pdf", SampleCall::CosineSample),
     ]
 }
 
@@ -41,7 +42,7 @@ pub const DOMAIN: &[Param] = &[
         Call::CosinePdf { w } => Some(cos_z(*w)),
         _ => None,
     }),
-    crate::grade::catalogue::JACOBIAN,
+    crate::grade::case_input::JACOBIAN,
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {

@@ -4,9 +4,9 @@
 //! that start elsewhere and cross the slabs obliquely or in the other order, a majorant
 //! far above σt, and a step bound of 1 where no tentative collision is null.
 
-use crate::grade::catalogue::EstimatorSpec;
+use crate::grade::estimator::EstimatorSpec;
 use crate::geometry::Ray;
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::medium::{Coefficients, FreeFlight, Medium};
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;

@@ -1,6 +1,6 @@
 //! Cases of `schlick_r0` and `fresnel_schlick`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::catalogue::indices::{ETA, critical, eta_pair, index_ratio, sin2_t};
 use crate::grade::call::Call;
 use crate::grade::domain::{Draw, Param, UPPER_COS_BOUNDARIES};

@@ -1,6 +1,6 @@
 //! Cases of `kajiya_kay`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::bsdf::KajiyaKayParams;
 use crate::grade::call::Call;
 use crate::grade::domain::{Boundary, Draw, Param, channel, cos_between, exponent};

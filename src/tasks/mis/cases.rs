@@ -21,10 +21,10 @@
 use crate::grade::catalogue::phong_floor::PhongSurface;
 use crate::grade::catalogue::polygon::projected_solid_angle;
 use crate::grade::catalogue::rough_conductor::{self, RoughConductor, StoredQuadrature};
-use crate::grade::catalogue::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
+use crate::grade::estimator::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
 use crate::tasks::path_trace::cases as path_trace;
 use crate::geometry::{Hit, Ray};
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::grade::variance_pair::{VarianceBound, VariancePair};
 use crate::integrator::Heuristic;
 use crate::optics::fresnel_dielectric_f64;

@@ -3,10 +3,11 @@
 
 use crate::tasks::cosine_sample::cases::{QUAD_X, QUAD_Y, QUAD_Z, quad};
 use crate::grade::catalogue::polygon::{hits_rectangle, projected_solid_angle};
-use crate::grade::catalogue::{CaseInput, EstimatorSpec};
+use crate::grade::case_input::CaseInput;
+use crate::grade::estimator::EstimatorSpec;
 use crate::grade::call::{Call, SampleCall};
 use crate::grade::domain::{Draw, Param};
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::sampling::Sampler;
 use crate::worksheet::Tasks;
 use glam::Vec3;
@@ -65,9 +66,9 @@ pub fn fixed() -> Vec<CaseInput> {
             0.3,
         )
         .note(BELOW),
-        crate::grade::catalogue::jacobian_case("the warp follows ndf_pdf at setup 1", setups()[0].clone()),
-        crate::grade::catalogue::jacobian_case("the warp follows ndf_pdf at setup 2", setups()[1].clone()),
-        crate::grade::catalogue::jacobian_case("the warp follows ndf_pdf at setup 3", setups()[2].clone()),
+        crate::grade::case_input::jacobian_case("the warp follows ndf_pdf at setup 1", setups()[0].clone()),
+        crate::grade::case_input::jacobian_case("the warp follows ndf_pdf at setup 2", setups()[1].clone()),
+        crate::grade::case_input::jacobian_case("the warp follows ndf_pdf at setup 3", setups()[2].clone()),
     ]
 }
 
@@ -97,7 +98,7 @@ pub const DOMAIN: &[Param] = &[
     PAIR[3],
     PAIR[4],
     PAIR[5],
-    crate::grade::catalogue::JACOBIAN,
+    crate::grade::case_input::JACOBIAN,
 ];
 
 pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {

@@ -7,15 +7,15 @@
 //!
 //! They cover the contract's whole range of depths (below 1, 1, 2, small caps, unbounded),
 //! coloured albedos (each channel its own estimate, weighted apart by
-//! [`crate::grade::catalogue::CHANNEL_WEIGHTS`]), and a glossy Phong floor under emitters that reflect
+//! [`crate::grade::estimator::CHANNEL_WEIGHTS`]), and a glossy Phong floor under emitters that reflect
 //! nothing, whose BSDF sampling fails at every wall (`bounce` is `None`) and whose bounce
 //! weights vary around and above 1.
 
 use crate::grade::catalogue::phong_floor::PhongSurface;
 use crate::grade::catalogue::rough_conductor::{self, RoughConductor, StoredQuadrature};
-use crate::grade::catalogue::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
+use crate::grade::estimator::{CHANNEL_WEIGHTS, EstimatorSpec, yaml_rgb};
 use crate::geometry::Ray;
-use crate::grade::power::Declared;
+use crate::grade::declared::Declared;
 use crate::integrator::Segment;
 use crate::sampling::{Sampler, uniform_sphere};
 use crate::scene::{LoadOptions, Scene};

@@ -1,6 +1,6 @@
 //! Cases of `phong` and `reciprocity_gap`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::bsdf::PhongParams;
 use crate::grade::call::Call;
 use crate::grade::case::Rule;

@@ -1,6 +1,6 @@
 //! Cases of `reflect`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::call::Call;
 use crate::grade::domain::{Draw, Param, cos_between, cosine, length};
 use crate::sampling::Sampler;

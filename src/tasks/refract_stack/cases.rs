@@ -1,6 +1,6 @@
 //! Cases of `refract`, `critical_angle` and `refract_stack`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::catalogue::indices::{ETA, critical, eta_pair, index_ratio, sin2_t};
 use crate::grade::call::{Call, StackInput};
 use crate::grade::case::Rule;

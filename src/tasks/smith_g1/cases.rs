@@ -1,6 +1,6 @@
 //! Cases of `smith_g1`.
 
-use crate::grade::catalogue::CaseInput;
+use crate::grade::case_input::CaseInput;
 use crate::grade::call::Call;
 use crate::grade::domain::{Draw, Param, cos_z, cosine, roughness};
 use crate::sampling::Sampler;
