@@ -77,6 +77,7 @@ pub mod panics;
 pub mod similarity;
 pub mod stability;
 pub mod tasks;
+pub mod timestamp;
 
 pub use pbrlab_renderer::{
     atomic_file, bsdf, compiled_reference, for_each_task_function, geometry, integrator, light,

@@ -59,7 +59,7 @@ pub struct ClassRun<'a> {
     /// Show a progress bar.
     pub progress: bool,
     /// Grade every submission again, not only those without a grade: the results replaced
-    /// go to `history/<seconds since 1970>/`, and `changes.md` (and `changes.json`) say
+    /// go to `history/<UTC date and time>/` (`2026-12-07T13-30-05Z`), and `changes.md` (and `changes.json`) say
     /// what changed ([`super::regrade`]). A new result that is not a grade keeps the saved
     /// one.
     pub regrade: bool,
@@ -349,14 +349,7 @@ impl ClassRun<'_> {
     /// Where this run keeps the results a regrade replaces: `history/<seconds since
     /// 1970>/`, with `-2`, `-3`, … added when that folder exists.
     fn history_folder(&self) -> PathBuf {
-        let seconds = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_secs());
-        let base = self.out.join("history").join(seconds.to_string());
-        std::iter::once(base.clone())
-            .chain((2..).map(|n| base.with_file_name(format!("{seconds}-{n}"))))
-            .find(|folder| !folder.exists())
-            .unwrap_or(base)
+        crate::timestamp::unused(&self.out.join("history"), "", "")
     }
 
     /// The saved result of `student`, if there is one that reads.
@@ -718,7 +711,7 @@ pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
         s += "\n";
     }
     s += "| entry | mean | max | passed | partly right | failed | compile error | crashed | not attempted | most common failing check |\n";
-    s += "|---|---|---|---|---|---|---|---|---|\n";
+    s += "|---|---|---|---|---|---|---|---|---|---|\n";
     for e in entries {
         let outcomes: Vec<_> = graded.iter().filter_map(|g| g.task(e)).collect();
         if outcomes.is_empty() {

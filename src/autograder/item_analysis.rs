@@ -151,17 +151,30 @@ pub fn markdown(rows: &[CheckRow]) -> String {
     s
 }
 
-/// `summary.html`: `head` (the class's counts, as text) and the checks with a bar each for
-/// the pass rate, one self-contained page.
+/// `markdown` (the class summary: headings, lists, tables) as HTML. Raw HTML in it (a
+/// student's name or message could hold some) is shown as text, never interpreted.
+fn markdown_to_html(markdown: &str) -> String {
+    use pulldown_cmark::{Event, Options, Parser};
+    let events = Parser::new_ext(markdown, Options::ENABLE_TABLES).map(|event| match event {
+        Event::Html(raw) | Event::InlineHtml(raw) => Event::Text(raw),
+        other => other,
+    });
+    let mut html = String::new();
+    pulldown_cmark::html::push_html(&mut html, events);
+    html
+}
+
+/// `summary.html`: `head` (the class's counts and the table per entry, as Markdown, shown
+/// as HTML) and the checks with a bar each for the pass rate, one self-contained page.
 pub fn html(head: &str, rows: &[CheckRow]) -> String {
     let mut s = String::from(
         "<!doctype html><html lang=\"en\"><meta charset=\"utf-8\"><title>pbrlab class \
          summary</title><style>body{font:14px system-ui,sans-serif;margin:2em}\
          table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;\
          text-align:left;vertical-align:top}.n{text-align:right}pre{white-space:pre-wrap}\
-         </style><h1>Class summary</h1>",
+         </style>",
     );
-    let _ = write!(s, "<pre>{}</pre>", escape(head));
+    s += &markdown_to_html(head);
     s += "<h2>Checks, hardest first within each entry</h2><table><tr><th>entry</th>\
           <th>check</th><th>pass rate</th><th class=n>passed / ran</th>\
           <th>most common failing case</th><th class=n>time (mean / max)</th>\
@@ -270,5 +283,15 @@ mod tests {
             !page.contains("<script>") && !page.contains("<b>"),
             "{page}"
         );
+        // The summary's Markdown is a real table; a student's text in it stays text.
+        let head = "# Class summary\n\n- eve <img src=x onerror=alert(1)>: not graded\n\n\
+                    | entry | mean |\n|---|---|\n| reflect | 1.50 |\n";
+        let page = html(head, &[]);
+        assert!(page.contains("<h1>Class summary</h1>"), "{page}");
+        assert!(
+            page.contains("<th>entry</th>") && page.contains("<td>1.50</td>"),
+            "{page}"
+        );
+        assert!(!page.contains("<img") && page.contains("&lt;img"), "{page}");
     }
 }

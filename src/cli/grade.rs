@@ -8,6 +8,7 @@ use crate::grade::report::{self, Format};
 use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::BuildRecord;
 use crate::grade::variant::Variant;
+use crate::grade::verdict::TaskStatus;
 use crate::implementation::ImplChoice;
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
@@ -158,6 +159,27 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         // Losing the progress record must not lose the grade itself.
         if let Err(e) = history::save(&report) {
             eprintln!("warning: could not remember this grade: {e:#}");
+        }
+    }
+    if args.format != Format::Text && args.implementation == ImplChoice::Student {
+        let tasks: Vec<_> = report.tasks.iter().filter(|t| t.max_points > 0.0).collect();
+        let stubs = tasks
+            .iter()
+            .filter(|t| t.status == TaskStatus::NotAttempted)
+            .count();
+        if stubs > 0
+            && stubs
+                == tasks
+                    .iter()
+                    .filter(|t| !t.task.starts_with("scene: "))
+                    .count()
+        {
+            // A results file of the shipped stubs is rarely what was meant.
+            eprintln!(
+                "note: every task graded is still the shipped stub of exercises/ here; a \
+                 submission is graded with `grade-class` or an autograder package \
+                 (`autograder gradescope DIR`)"
+            );
         }
     }
     let detail = if args.verbose {

@@ -1,4 +1,5 @@
 use crate::grade::history::state_dir;
+use crate::grade::verdict::TaskStatus;
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
 use std::collections::BTreeMap;
@@ -7,8 +8,9 @@ use std::path::PathBuf;
 /// Arguments of `pbrlab hint`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The task (its id, or a unique prefix of it).
-    pub task: String,
+    /// The task (its id, or a unique prefix of it); without one, the first task in worksheet
+    /// order that has not passed yet.
+    pub task: Option<String>,
     /// Show the hints up to this level (1 is the gentlest) instead of the next unseen one.
     #[arg(long, conflicts_with = "all")]
     pub level: Option<usize>,
@@ -33,9 +35,33 @@ fn load_seen() -> BTreeMap<String, usize> {
 /// Shows the task's next unseen hint (or the levels asked for) and remembers it, so the
 /// next call goes one level further: one step at a time, as the hints are written.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
+    let task = match &args.task {
+        Some(task) => TaskId::parse(task).map_err(|e| anyhow!(e))?,
+        None => {
+            let task = next_task();
+            println!(
+                "(the first task that has not passed yet; `{} hint TASK` for another)\n",
+                super::invocation()
+            );
+            task
+        }
+    };
     let again = format!("`{} hint {}` again", super::invocation(), task.name());
     show(task, &args, &again)
+}
+
+/// The first task in worksheet order whose latest grade (`pbrlab tasks`) is not full marks:
+/// the one to work on next.
+pub fn next_task() -> TaskId {
+    let progress = crate::grade::history::load_progress();
+    TaskId::ALL
+        .into_iter()
+        .find(|t| {
+            progress
+                .get(t.name())
+                .is_none_or(|g| g.outcome.status != TaskStatus::Passed)
+        })
+        .unwrap_or(TaskId::ALL[0])
 }
 
 /// [`run`] for `task`; `again` says how to ask for the next level (the command, or a key

@@ -9,31 +9,26 @@ use crate::worksheet::{TaskId, task_functions};
 #[derive(clap::Args, Debug, Default)]
 pub struct Args {}
 
-/// The status column of a task: its latest grade when there is one (saying when the file
-/// was edited since), otherwise whether the file is still the shipped stub (`attempted`:
-/// edited, told from the files without running them).
-fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> String {
+/// The points and status columns of a task: its latest grade when there is one (`6.0/6`,
+/// with `*` when the file was edited since), otherwise its points and whether the file is
+/// still the shipped stub (`edited`: told from the files without running them).
+fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> (String, String) {
+    let points = task.info().points.to_string();
     match progress.get(task.name()) {
         Some(graded) if graded.outcome.max_points > 0.0 => {
-            let stale = if changed_since(task, graded) {
-                ", edited since"
-            } else {
-                ""
-            };
             let t = &graded.outcome;
-            format!(
-                "{} ({:.1}/{}{stale})",
-                t.status.label(),
-                t.points,
-                t.max_points
+            let stale = if changed_since(task, graded) { "*" } else { "" };
+            (
+                format!("{:.1}/{}", t.points, t.max_points),
+                format!("{}{stale}", t.status.label()),
             )
         }
         Some(graded) if graded.outcome.status == TaskStatus::NoChecks => {
-            graded.outcome.status.label()
+            (points, graded.outcome.status.label())
         }
-        _ if task_functions(task).is_empty() => "arrives with the renderer".into(),
-        _ if attempted.contains(task) => "edited, not graded yet".into(),
-        _ => "not attempted".into(),
+        _ if task_functions(task).is_empty() => (points, "with the renderer".into()),
+        _ if attempted.contains(task) => (points, "edited, ungraded".into()),
+        _ => (points, "not attempted".into()),
     }
 }
 
@@ -47,46 +42,74 @@ fn changed_since(task: TaskId, graded: &Graded) -> bool {
         .is_ok_and(|modified| modified > graded.time())
 }
 
-/// The status of a scene's render check: its latest grade, or what it waits for.
-fn scene_status(scene: &str, progress: &Progress) -> String {
+/// The points and status columns of a scene's render check: its latest grade, or that it
+/// waits for its tasks.
+fn scene_status(scene: &str, points: f64, progress: &Progress) -> (String, String) {
     match progress.get(&scene_entry(scene)).map(|g| &g.outcome) {
         Some(t) => match &t.status {
-            TaskStatus::NeedsTask { task } => format!("waits for {task}"),
-            other => format!("{} ({:.1}/{})", other.label(), t.points, t.max_points),
+            TaskStatus::NeedsTask { .. } => (points.to_string(), "waits for tasks".into()),
+            other => (format!("{:.1}/{}", t.points, t.max_points), other.label()),
         },
-        None => "not graded yet (renders once the tasks it needs pass)".into(),
+        None => (points.to_string(), "waits for tasks".into()),
     }
 }
 
-/// Prints the task table and the scenes' render checks with the student's progress: each
-/// one's latest `pbrlab grade`, otherwise which tasks are still stubs.
+/// The width of a terminal the table fits.
+const WIDTH: usize = 80;
+
+/// One row: the entry, its points, its status and its title, the title wrapped at spaces
+/// onto lines of its own column so that every line fits in [`WIDTH`] columns.
+fn row(entry: &str, points: &str, status: &str, title: &str) -> String {
+    let head = format!("{entry:<16} {points:>7}  {status:<17}  ");
+    let indent = head.chars().count();
+    let room = WIDTH.saturating_sub(indent).max(20);
+    let mut lines = vec![String::new()];
+    for word in title.split_whitespace() {
+        let last = lines.last_mut().expect("one line at least");
+        if !last.is_empty() && last.chars().count() + 1 + word.chars().count() > room {
+            lines.push(word.to_string());
+        } else {
+            if !last.is_empty() {
+                last.push(' ');
+            }
+            last.push_str(word);
+        }
+    }
+    let mut text = format!("{head}{}", lines[0]).trim_end().to_string();
+    for line in &lines[1..] {
+        text += &format!("\n{:indent$}{line}", "");
+    }
+    text
+}
+
+/// Prints the task table and the scenes' render checks with the student's progress, in 80
+/// columns: each one's latest `pbrlab grade`, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
     let progress = history::load_progress();
     let attempted = crate::handout::stubs::edited(crate::repository_root());
-    println!("{:<16} {:<62} {:>6}  status", "task", "title", "points");
+    println!("{}", row("task", "points", "status", "title"));
     let mut total = 0.0;
+    let mut stale = false;
     for task in TaskId::ALL {
         let info = task.info();
         total += info.points as f64;
-        println!(
-            "{:<16} {:<62} {:>6}  {}",
-            info.id,
-            info.title,
-            info.points,
-            status(task, &progress, attempted)
-        );
+        let (points, status) = status(task, &progress, attempted);
+        stale |= status.ends_with('*');
+        println!("{}", row(info.id, &points, &status, info.title));
     }
     for check in RENDER_CHECKS {
         total += check.points;
+        let (points, status) = scene_status(check.scene, check.points, &progress);
+        let title = format!("render of scenes/{}.yaml", check.scene);
         println!(
-            "{:<16} {:<62} {:>6}  {}",
-            scene_entry(check.scene),
-            format!("render of scenes/{}.yaml with your code", check.scene),
-            check.points,
-            scene_status(check.scene, &progress)
+            "{}",
+            row(&scene_entry(check.scene), &points, &status, &title)
         );
     }
-    println!("{:<16} {:<62} {:>6}", "total", "", total);
+    println!("{}", row("total", &total.to_string(), "", ""));
+    if stale {
+        println!("* the exercise file was edited after this grade");
+    }
     let scored: f64 = progress
         .values()
         .filter(|g| g.outcome.max_points > 0.0)
@@ -97,7 +120,8 @@ pub fn run(_args: Args) -> anyhow::Result<()> {
         println!("\nNot graded yet: run `{pbrlab} grade` (or `{pbrlab} watch`).");
     } else {
         println!(
-            "\nLatest grades: {scored:.1}/{total} ({}). Run `{} grade` again after changing your code.",
+            "\nLatest grades: {scored:.1}/{total} ({}).\nRun `{} grade` again after changing \
+             your code.",
             history::progress_path().display(),
             super::invocation()
         );

@@ -1,4 +1,3 @@
-use crate::grade::verdict::TaskStatus;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::collections::BTreeMap;
@@ -61,15 +60,7 @@ fn regrade(exe: &Path, tasks: &[String], verbose: bool) -> anyhow::Result<()> {
 fn hint_task(saved: Option<TaskId>, named: &[String]) -> TaskId {
     saved
         .or_else(|| named.iter().find_map(|n| TaskId::parse(n).ok()))
-        .or_else(|| {
-            let progress = crate::grade::history::load_progress();
-            TaskId::ALL.into_iter().find(|t| {
-                progress
-                    .get(t.name())
-                    .is_none_or(|g| g.outcome.status != TaskStatus::Passed)
-            })
-        })
-        .unwrap_or(TaskId::ALL[0])
+        .unwrap_or_else(super::hint::next_task)
 }
 
 /// The task of the most recently modified exercise file among those that changed.
@@ -122,7 +113,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 let task = hint_task(saved, &args.tasks);
                 println!();
                 let args = super::hint::Args {
-                    task: task.name().into(),
+                    task: Some(task.name().into()),
                     level: None,
                     all: false,
                 };

@@ -100,11 +100,48 @@ pub fn reset(root: &Path, task: TaskId, keep: &Path) -> anyhow::Result<Option<Pa
     if current == stub {
         return Ok(None);
     }
-    let seconds = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    let kept = keep.join(format!("{}-{seconds}.rs", task.name()));
+    let kept = crate::timestamp::unused(keep, &format!("{}-", task.name()), ".rs");
     crate::atomic_file::write(&kept, current.as_bytes())?;
     crate::atomic_file::write(&file, stub.as_bytes())?;
     Ok(Some(kept))
+}
+
+/// Undoes the last [`reset`] of `task`: puts back the version it kept in `keep` (the newest
+/// `<task>-<time>.rs` there) and removes it from `keep`, so a second undo goes one reset
+/// further back. The file it replaces is kept in turn (as `undone-<task>-<time>.rs`) unless
+/// it is the shipped stub: work done since the reset is not lost. Returns the version put back, or `None` when `keep`
+/// holds none of `task`.
+pub fn undo_reset(root: &Path, task: TaskId, keep: &Path) -> anyhow::Result<Option<PathBuf>> {
+    let prefix = format!("{}-", task.name());
+    let mut kept: Vec<PathBuf> = std::fs::read_dir(keep)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with(&prefix) && n.ends_with(".rs"))
+        })
+        .collect();
+    // The newest last: by when each was written, then by name (`-2` after the same second's
+    // first).
+    kept.sort_by_key(|p| {
+        let written = std::fs::metadata(p).and_then(|m| m.modified()).ok();
+        (written, p.clone())
+    });
+    let Some(newest) = kept.pop() else {
+        return Ok(None);
+    };
+    let version = std::fs::read_to_string(&newest)
+        .with_context(|| format!("reading {}", newest.display()))?;
+    let file = exercise_file(root, task);
+    let current = std::fs::read_to_string(&file).unwrap_or_default();
+    if current != shipped(root, task)? && current != version {
+        let aside = crate::timestamp::unused(keep, &format!("undone-{}-", task.name()), ".rs");
+        crate::atomic_file::write(&aside, current.as_bytes())?;
+    }
+    crate::atomic_file::write(&file, version.as_bytes())?;
+    std::fs::remove_file(&newest).with_context(|| format!("removing {}", newest.display()))?;
+    Ok(Some(newest))
 }

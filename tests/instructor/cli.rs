@@ -49,15 +49,26 @@ fn the_stubs_grade_to_zero_and_tasks_shows_it() {
     }
     assert!(report.tasks.iter().any(|t| t.task == "scene: cornell"));
     let tasks = stdout(&pbrlab(state.path(), &["tasks"]));
-    for task in &untouched {
+    // The table fits an 80-column terminal (long titles wrap in their column).
+    for line in tasks.lines().filter(|l| !l.starts_with("Latest grades")) {
         assert!(
-            row(&tasks, task.name()).contains("not attempted (0.0/"),
-            "{tasks}"
+            line.chars().count() <= 80,
+            "{} columns: {line}",
+            line.chars().count()
         );
+    }
+    for task in &untouched {
+        assert!(graded_not_attempted(row(&tasks, task.name())), "{tasks}");
     }
     if all_stubs {
         assert_eq!(report.score, 0.0);
         assert!(tasks.contains("Latest grades: 0.0/"), "{tasks}");
+        // A results file of the stubs says so (an instructor who meant a submission).
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains("every task graded is still the shipped stub"),
+            "{stderr}"
+        );
     }
 }
 
@@ -90,7 +101,35 @@ fn junit_reports_follow_the_schema_and_say_what_the_grade_says() {
     assert_eq!((failures, skipped), (0, 0), "{xml}");
 }
 
+/// `pbrlab hint` without a task shows the next hint of the first task not passed yet.
+#[test]
+fn hint_without_a_task_shows_the_first_task_not_passed() {
+    let state = tempfile::tempdir().unwrap();
+    let out = pbrlab(state.path(), &["hint"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = stdout(&out);
+    let first = TaskId::ALL[0].name();
+    assert!(
+        text.contains("the first task that has not passed yet"),
+        "{text}"
+    );
+    assert!(text.contains(&format!("{first} — ")), "{text}");
+    assert!(text.contains("hint 1/"), "{text}");
+    // The next call goes one level further, as with the task named.
+    let again = stdout(&pbrlab(state.path(), &["hint"]));
+    assert!(again.contains("hint 2/"), "{again}");
+}
+
 /// The row of `task` in `pbrlab tasks`' table.
+/// True for a row of a task graded 0 as not attempted: `reflect  0.0/5  not attempted …`.
+fn graded_not_attempted(row: &str) -> bool {
+    row.contains(" 0.0/") && row.contains("not attempted")
+}
+
 fn row<'t>(table: &'t str, task: &str) -> &'t str {
     table
         .lines()
@@ -108,21 +147,12 @@ fn tasks_keeps_every_tasks_latest_grade_and_lists_the_scenes() {
         let (first, second) = (first.name(), second.name());
         grade(first);
         let table = stdout(&pbrlab(state.path(), &["tasks"]));
-        assert!(
-            row(&table, first).contains("not attempted (0.0/"),
-            "{table}"
-        );
-        assert!(!row(&table, second).contains('('), "{table}");
+        assert!(graded_not_attempted(row(&table, first)), "{table}");
+        assert!(!row(&table, second).contains("0.0/"), "{table}");
         grade(second);
         let table = stdout(&pbrlab(state.path(), &["tasks"]));
-        assert!(
-            row(&table, first).contains("not attempted (0.0/"),
-            "{table}"
-        );
-        assert!(
-            row(&table, second).contains("not attempted (0.0/"),
-            "{table}"
-        );
+        assert!(graded_not_attempted(row(&table, first)), "{table}");
+        assert!(graded_not_attempted(row(&table, second)), "{table}");
     }
     // The scenes' render checks are rows too, and the total counts them, as grade's does.
     let table = stdout(&pbrlab(state.path(), &["tasks"]));

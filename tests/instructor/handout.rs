@@ -332,8 +332,23 @@ fn the_handout_is_a_git_repository_that_can_put_a_stub_back() {
         .unwrap()
         .expect("the file was not the stub");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), stub);
-    assert_eq!(std::fs::read_to_string(kept).unwrap(), "// my work\n");
+    assert_eq!(std::fs::read_to_string(&kept).unwrap(), "// my work\n");
     assert_eq!(stubs::reset(&dir, TaskId::SmithG1, &keep).unwrap(), None);
+    // Undone: the work comes back and its copy goes; work done on the stub since is kept.
+    std::fs::write(&file, "// started again\n").unwrap();
+    let restored = stubs::undo_reset(&dir, TaskId::SmithG1, &keep).unwrap();
+    assert_eq!(restored.as_ref(), Some(&kept));
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "// my work\n");
+    assert!(!kept.exists());
+    let aside: Vec<String> = std::fs::read_dir(&keep)
+        .unwrap()
+        .map(|e| std::fs::read_to_string(e.unwrap().path()).unwrap())
+        .collect();
+    assert_eq!(aside, ["// started again\n"]);
+    assert_eq!(
+        stubs::undo_reset(&dir, TaskId::SmithG1, &keep).unwrap(),
+        None
+    );
 }
 
 #[test]

@@ -370,6 +370,11 @@ fn a_class_with_variants_gets_its_gradebooks_item_analysis_and_restricted_feedba
     );
     let page = std::fs::read_to_string(out.join("summary.html")).unwrap();
     assert!(page.contains("<svg") && page.contains("smith_g1"), "{page}");
+    // The class's table is a table, every column of it.
+    assert!(
+        page.contains("<th>most common failing check</th>"),
+        "{page}"
+    );
     // junit.xml: a suite per student and task; bob's wrong smith_g1 fails with its input.
     let junit = std::fs::read_to_string(out.join("junit.xml")).unwrap();
     let (_, failures, _) = junit_schema::validate(&junit);

@@ -74,24 +74,52 @@ impl fmt::Display for Needs {
         writeln!(f, "tasks those call:    {}", names(indirect))?;
         writeln!(f, "integrator:          {}", self.integrator())?;
         writeln!(f, "analytic shapes:     {}", self.analytic_shapes)?;
-        let built = |n: usize, what: &str| {
-            if n > 0 {
-                format!("yes ({n} {what})")
-            } else {
-                "no".to_string()
-            }
+        let built = |n: usize, one: &str, many: &str| match n {
+            0 => "no".to_string(),
+            1 => format!("yes (1 {one})"),
+            n => format!("yes ({n} {many})"),
         };
         writeln!(
             f,
             "triangle BVH:        {}",
-            built(self.triangles, "triangles")
+            built(self.triangles, "triangle", "triangles")
         )?;
         writeln!(
             f,
             "fibre BVH:           {}",
-            built(self.fibre_segments, "segments")
+            built(self.fibre_segments, "segment", "segments")
         )?;
-        writeln!(f, "light sampler:       {}", built(self.lights, "lights"))?;
-        write!(f, "media:               {}", built(self.media, "media"))
+        writeln!(
+            f,
+            "light sampler:       {}",
+            built(self.lights, "light", "lights")
+        )?;
+        write!(
+            f,
+            "media:               {}",
+            built(self.media, "medium", "media")
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn counts_read_in_the_singular_for_one() {
+        let needs = super::Needs {
+            lights: 1,
+            media: 2,
+            ..Default::default()
+        };
+        let text = needs.to_string();
+        assert!(
+            text.contains("light sampler:       yes (1 light)"),
+            "{text}"
+        );
+        assert!(
+            text.contains("media:               yes (2 media)"),
+            "{text}"
+        );
+        assert!(text.contains("triangle BVH:        no"), "{text}");
     }
 }
