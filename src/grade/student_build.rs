@@ -458,18 +458,14 @@ impl StudentBuild<'_> {
 
     /// Runs cargo once, reading its JSON messages; `left` of the build's `deadline`
     /// remains.
-    fn cargo(
+    /// The cargo command that builds `compiled` (the exercise folder the build script
+    /// compiles) into `target`: in the build's view where this kernel makes one, with the
+    /// progress bar it drives on a terminal.
+    fn command(
         &self,
-        stubs: &Path,
-        stubbed: bool,
-        left: Duration,
-        deadline: Duration,
-    ) -> anyhow::Result<Round> {
-        let target = std::env::var_os("CARGO_TARGET_DIR")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| self.root.join("target"));
-        // The one folder the build script compiles.
-        let compiled = if stubbed { stubs } else { self.exercises };
+        compiled: &Path,
+        target: &Path,
+    ) -> anyhow::Result<(Command, Option<View>, Option<indicatif::ProgressBar>)> {
         let mut env: Vec<(String, String)> = Vec::new();
         // The switch that turns the exercise check off, for the tests that prove the view
         // holds without it: the grader's to set, never the student's.
@@ -485,7 +481,7 @@ impl StudentBuild<'_> {
             env.push(("CARGO_TERM_PROGRESS_WHEN".into(), "always".into()));
             env.push(("CARGO_TERM_PROGRESS_WIDTH".into(), "100".into()));
         }
-        let view = match self.prepare_view(&target)? {
+        let view = match self.prepare_view(target)? {
             Some((toolchain, framework, mechanism)) => {
                 env.push((
                     "PBRLAB_EXERCISES".into(),
@@ -497,7 +493,7 @@ impl StudentBuild<'_> {
                 Some(View::new(
                     &ViewInputs {
                         root: self.root,
-                        target: &target,
+                        target,
                         toolchain: &toolchain,
                         framework: &framework,
                         exercises: compiled,
@@ -509,7 +505,7 @@ impl StudentBuild<'_> {
             }
             None => None,
         };
-        let mut cargo = match &view {
+        let cargo = match &view {
             Some(view) => view.command(),
             None => {
                 let mut cargo =
@@ -528,78 +524,30 @@ impl StudentBuild<'_> {
                 cargo
             }
         };
-        cargo.stdout(Stdio::piped()).stderr(Stdio::piped());
-        // Its own process group, so that the whole tree (rustc, the linker) is killed
-        // with it and nothing outlives the build.
-        {
-            use std::os::unix::process::CommandExt;
-            cargo.process_group(0);
-            if self.bounded {
-                // SAFETY: between fork and exec the closure only makes setrlimit calls,
-                // which are async-signal-safe, and allocates nothing.
-                unsafe {
-                    cargo.pre_exec(move || {
-                        use rlimit::Resource;
-                        Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
-                        Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
-                        Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
-                        Resource::CORE.set(0, 0)
-                    });
-                }
-            }
-        }
+        Ok((cargo, view, bar))
+    }
+
+    fn cargo(
+        &self,
+        stubs: &Path,
+        stubbed: bool,
+        left: Duration,
+        deadline: Duration,
+    ) -> anyhow::Result<Round> {
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| self.root.join("target"));
+        // The one folder the build script compiles.
+        let compiled = if stubbed { stubs } else { self.exercises };
+        let (mut cargo, view, bar) = self.command(compiled, &target)?;
+        bound(&mut cargo, self.bounded);
         let mut child = cargo
             .spawn()
             .context("running cargo to build the exercises")?;
         let stderr = child.stderr.take().context("cargo's stderr")?;
-        let echo = self.echo;
-        let side = std::thread::spawn(move || {
-            let mut lines = Vec::new();
-            let mut kept = 0;
-            let mut reader = BufReader::new(stderr);
-            // Cargo redraws its progress line after `\r`.
-            let end = |b: u8| b == b'\n' || (bar.is_some() && b == b'\r');
-            while let Some(line) = super::isolation::read_until(&mut reader, end) {
-                if let Some(bar) = &bar {
-                    if let Some((done, total)) = cargo_progress(&line) {
-                        bar.set_length(total);
-                        bar.set_position(done);
-                        continue;
-                    }
-                    if line.trim().is_empty() {
-                        continue;
-                    }
-                    bar.println(&line);
-                } else if echo {
-                    eprintln!("{line}");
-                }
-                if kept + line.len() <= MAX_OUTPUT {
-                    kept += line.len();
-                    lines.push(line);
-                }
-            }
-            if let Some(bar) = bar {
-                bar.finish_and_clear();
-            }
-            lines
-        });
+        let side = read_diagnostics(stderr, bar, self.echo);
         let stdout = child.stdout.take().context("cargo's stdout")?;
-        let (tx, rx) = std::sync::mpsc::channel();
-        let exercises = compiled.to_path_buf();
-        std::thread::spawn(move || {
-            let mut round = Round {
-                success: false,
-                blamed: BTreeMap::new(),
-                errors: Vec::new(),
-                worker: None,
-                binaries: Vec::new(),
-            };
-            let mut reader = BufReader::new(stdout);
-            while let Some(line) = super::isolation::read_line(&mut reader) {
-                read_message(&line, &exercises, echo, &mut round);
-            }
-            let _ = tx.send(round);
-        });
+        let rx = read_messages(stdout, compiled.to_path_buf(), self.echo);
         let group = child.id();
         let mut round = match rx.recv_timeout(left) {
             Ok(round) => round,
@@ -620,6 +568,18 @@ impl StudentBuild<'_> {
         if round.success {
             self.place_binaries(&mut round, view.as_ref())?;
         }
+        self.diagnose(round, &status, lines)
+    }
+
+    /// What a finished build's diagnostics (`lines`, cargo's stderr) say beyond its JSON
+    /// messages: a compiler stopped by the build's bounds (an error of the submission), and
+    /// the exercise check's refusals, each charged to its task.
+    fn diagnose(
+        &self,
+        mut round: Round,
+        status: &std::process::ExitStatus,
+        lines: Vec<String>,
+    ) -> anyhow::Result<Round> {
         // A compiler stopped by a bound: cargo names the signal that stopped it (SIGXCPU,
         // 24, for CPU time, SIGKILL after it) or the allocation that failed. (A constant
         // too large for the memory bound is a compile error of its file, charged to its
@@ -649,6 +609,92 @@ impl StudentBuild<'_> {
         }
         Ok(round)
     }
+}
+
+/// Puts `cargo` in a process group of its own, so that the whole tree (rustc, the linker)
+/// is killed with it and nothing outlives the build, with its output piped; when
+/// `bounded`, under the build's [`BOUNDS`] (address space, CPU time, file size, no core).
+fn bound(cargo: &mut Command, bounded: bool) {
+    use std::os::unix::process::CommandExt;
+    cargo.stdout(Stdio::piped()).stderr(Stdio::piped());
+    cargo.process_group(0);
+    if bounded {
+        // SAFETY: between fork and exec the closure only makes setrlimit calls, which are
+        // async-signal-safe, and allocates nothing.
+        unsafe {
+            cargo.pre_exec(move || {
+                use rlimit::Resource;
+                Resource::AS.set(BOUNDS.memory, BOUNDS.memory)?;
+                Resource::CPU.set(BOUNDS.cpu_seconds, BOUNDS.cpu_seconds + 1)?;
+                Resource::FSIZE.set(BOUNDS.file_size, BOUNDS.file_size)?;
+                Resource::CORE.set(0, 0)
+            });
+        }
+    }
+}
+
+/// Reads cargo's `stderr` on a thread of its own: its progress line drives `bar` (on a
+/// terminal), every other line is shown (`echo`) and kept, up to [`MAX_OUTPUT`] bytes.
+fn read_diagnostics(
+    stderr: std::process::ChildStderr,
+    bar: Option<indicatif::ProgressBar>,
+    echo: bool,
+) -> std::thread::JoinHandle<Vec<String>> {
+    std::thread::spawn(move || {
+        let mut lines = Vec::new();
+        let mut kept = 0;
+        let mut reader = BufReader::new(stderr);
+        // Cargo redraws its progress line after `\r`.
+        let end = |b: u8| b == b'\n' || (bar.is_some() && b == b'\r');
+        while let Some(line) = super::isolation::read_until(&mut reader, end) {
+            if let Some(bar) = &bar {
+                if let Some((done, total)) = cargo_progress(&line) {
+                    bar.set_length(total);
+                    bar.set_position(done);
+                    continue;
+                }
+                if line.trim().is_empty() {
+                    continue;
+                }
+                bar.println(&line);
+            } else if echo {
+                eprintln!("{line}");
+            }
+            if kept + line.len() <= MAX_OUTPUT {
+                kept += line.len();
+                lines.push(line);
+            }
+        }
+        if let Some(bar) = bar {
+            bar.finish_and_clear();
+        }
+        lines
+    })
+}
+
+/// Reads cargo's JSON messages from `stdout` on a thread of its own into a [`Round`]
+/// (`exercises` is the folder compiled), sent when cargo closes its output.
+fn read_messages(
+    stdout: std::process::ChildStdout,
+    exercises: PathBuf,
+    echo: bool,
+) -> std::sync::mpsc::Receiver<Round> {
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut round = Round {
+            success: false,
+            blamed: BTreeMap::new(),
+            errors: Vec::new(),
+            worker: None,
+            binaries: Vec::new(),
+        };
+        let mut reader = BufReader::new(stdout);
+        while let Some(line) = super::isolation::read_line(&mut reader) {
+            read_message(&line, &exercises, echo, &mut round);
+        }
+        let _ = tx.send(round);
+    });
+    rx
 }
 
 /// Why a build of the student's code ended without binaries, when the student's code is the

@@ -9,7 +9,7 @@ use super::needs::Needs;
 use super::obj::load_obj;
 use super::schema::{
     CameraSpec, ConductorSpec, DensitySpec, LightSpec, MaterialSpec, MediumSpec, MisHeuristic,
-    SceneSpec, ShapeSpec, StrandsSpec, Strategy, TransmittanceEstimator,
+    SceneSpec, ShapeSpec, StrandsSpec, Strategy, TransformSpec, TransmittanceEstimator,
 };
 use super::settings::{RenderSettings, UNBOUNDED_DEPTH};
 use super::{Camera, Scene, ShapeInfo, density, strands};
@@ -213,6 +213,17 @@ struct Parts {
     lights: Vec<Light>,
     media: Vec<SceneMedium>,
     black: Option<u32>,
+}
+
+impl Parts {
+    /// Where a shape's geometry goes: the boundaries of media, or the surfaces.
+    fn geometry(&mut self, is_boundary: bool) -> &mut GeometryParts {
+        if is_boundary {
+            &mut self.boundaries
+        } else {
+            &mut self.surfaces
+        }
+    }
 }
 
 impl Builder<'_> {
@@ -682,6 +693,9 @@ impl Builder<'_> {
         })
     }
 
+    /// Adds one shape of the scene to `parts`: its surface ([`Builder::surface`]), its
+    /// geometry (one builder per kind of shape), then what the geometry decides: the
+    /// shape's reach, the medium it bounds and the light it is.
     fn shape(
         &mut self,
         spanned: &Spanned<ShapeSpec>,
@@ -691,6 +705,81 @@ impl Builder<'_> {
         parts: &mut Parts,
         eye: Vec3,
     ) -> Result<(), SceneError> {
+        let at = spanned.referenced;
+        let surface = self.surface(spanned, spec, material_index, materials, parts)?;
+        let shape_id = parts.shapes.len() as u32;
+        let is_boundary = surface.medium.is_some();
+        let placed = match &spanned.value {
+            ShapeSpec::Sphere { center, radius, .. } => {
+                sphere(center.0, radius.0, shape_id, is_boundary, parts)
+            }
+            ShapeSpec::Quad {
+                origin,
+                edge1,
+                edge2,
+                ..
+            } => self.quad(&at, [origin.0, edge1.0, edge2.0], shape_id, parts)?,
+            ShapeSpec::Box { min, max, .. } => {
+                self.cuboid(&at, min.0, max.0, shape_id, is_boundary, parts)?
+            }
+            ShapeSpec::Mesh {
+                file, transform, ..
+            } => {
+                let emits = surface.emission.is_some();
+                self.mesh(&at, file, transform, shape_id, is_boundary, emits, parts)?
+            }
+            ShapeSpec::Fibres {
+                strands: source,
+                radius,
+                ..
+            } => self.fibres(&at, source, radius.0, shape_id, parts)?,
+        };
+
+        if !within_reach(placed.reach) {
+            return Err(self.error(&at, beyond_reach(placed.reach)));
+        }
+        let eye_inside = match &spanned.value {
+            ShapeSpec::Sphere { center, radius, .. } => (eye - center.0).length() < radius.0,
+            ShapeSpec::Box { min, max, .. } => eye.cmpgt(min.0).all() && eye.cmplt(max.0).all(),
+            _ => false,
+        };
+        if is_boundary && eye_inside {
+            return Err(self.error(
+                &at,
+                "the camera is inside this medium: media must not contain the camera",
+            ));
+        }
+        let medium = match surface.medium {
+            Some(m) => {
+                parts.media.push(self.medium(m, placed.bounds)?);
+                Some(parts.media.len() as u32 - 1)
+            }
+            None => None,
+        };
+        if let Some(radiance) = surface.emission {
+            parts
+                .lights
+                .push(Light::area(shape_id, radiance, placed.patches));
+        }
+        parts.shapes.push(ShapeInfo {
+            material: surface.material,
+            emission: surface.emission.unwrap_or(Vec3::ZERO),
+            medium,
+        });
+        Ok(())
+    }
+
+    /// The surface of a shape: its material (black for an emitter without one), the medium
+    /// it bounds, what it emits; refused when it has none of them, or a medium beside a
+    /// material or emission (the boundary of a medium is index-matched and dark).
+    fn surface<'s>(
+        &self,
+        spanned: &Spanned<ShapeSpec>,
+        spec: &'s SceneSpec,
+        material_index: &BTreeMap<&str, u32>,
+        materials: &mut Vec<Material>,
+        parts: &mut Parts,
+    ) -> Result<Surface<'s>, SceneError> {
         let at = spanned.referenced;
         let surface = spanned.value.surface();
         let material = match surface.material {
@@ -704,7 +793,7 @@ impl Builder<'_> {
             })?),
             None => None,
         };
-        let medium_spec = match surface.medium {
+        let medium = match surface.medium {
             Some(name) => Some(spec.media.get(&name.value).ok_or_else(|| {
                 self.unknown_name(
                     name,
@@ -716,7 +805,7 @@ impl Builder<'_> {
             None => None,
         };
         let emission = surface.emission.map(|e| e.value.0);
-        if medium_spec.is_some() {
+        if medium.is_some() {
             if let Some(name) = surface.material {
                 return Err(self.error(
                     &name.referenced,
@@ -740,217 +829,239 @@ impl Builder<'_> {
                 })
             })
         });
+        Ok(Surface {
+            material,
+            medium,
+            emission,
+        })
+    }
 
-        let shape_id = parts.shapes.len() as u32;
-        let is_boundary = medium_spec.is_some();
+    /// A quad from its `[origin, edge1, edge2]`; refused without area. Quads are surfaces
+    /// only (they enclose no medium).
+    fn quad(
+        &self,
+        at: &Location,
+        [origin, edge1, edge2]: [Vec3; 3],
+        shape_id: u32,
+        parts: &mut Parts,
+    ) -> Result<Placed, SceneError> {
+        let q = Quad::new(origin, edge1, edge2, shape_id).ok_or_else(|| {
+            self.error(at, "the quad's edges are parallel or zero: it has no area")
+        })?;
+        let corners = [0.0, 1.0].map(|a| [0.0, 1.0].map(|b| q.origin + a * q.edge1 + b * q.edge2));
+        let placed = Placed {
+            patches: vec![Patch::quad(&q)],
+            bounds: (Vec3::ZERO, Vec3::ZERO),
+            reach: farthest(corners.iter().flatten()),
+        };
+        parts.surfaces.quads.push(q);
+        Ok(placed)
+    }
+
+    /// An axis-aligned box from `lo` to `hi`, as its six quads; refused unless `lo < hi` on
+    /// every axis.
+    fn cuboid(
+        &self,
+        at: &Location,
+        lo: Vec3,
+        hi: Vec3,
+        shape_id: u32,
+        is_boundary: bool,
+        parts: &mut Parts,
+    ) -> Result<Placed, SceneError> {
+        if !(lo.cmplt(hi).all()) {
+            return Err(self.error(at, "a box needs min < max on every axis"));
+        }
         let mut patches = Vec::new();
-        let bounds: (Vec3, Vec3);
-        // How far from the origin the shape reaches, checked against MAX_REACH below before
-        // anything builds a BVH over it.
-        let reach: f32;
-        match &spanned.value {
-            ShapeSpec::Sphere { center, radius, .. } => {
-                let s = Sphere {
-                    center: center.0,
-                    radius: radius.0,
-                    shape: shape_id,
-                };
-                reach = s.center.abs().max_element() + s.radius;
-                patches.push(Patch::sphere(&s));
-                bounds = (s.center - s.radius, s.center + s.radius);
-                if is_boundary {
-                    &mut parts.boundaries
-                } else {
-                    &mut parts.surfaces
-                }
-                .spheres
-                .push(s);
+        for q in box_quads(lo, hi, shape_id) {
+            patches.push(Patch::quad(&q));
+            parts.geometry(is_boundary).quads.push(q);
+        }
+        Ok(Placed {
+            patches,
+            bounds: (lo, hi),
+            reach: lo.abs().max(hi.abs()).max_element(),
+        })
+    }
+
+    /// A triangle mesh from an OBJ file, placed by `transform` (scale > 0, rotation in
+    /// degrees about x, then y, then z, translation); its triangles are light patches when
+    /// it `emits`.
+    #[allow(clippy::too_many_arguments)]
+    fn mesh(
+        &mut self,
+        at: &Location,
+        file: &Spanned<String>,
+        transform: &TransformSpec,
+        shape_id: u32,
+        is_boundary: bool,
+        emits: bool,
+        parts: &mut Parts,
+    ) -> Result<Placed, SceneError> {
+        let scale = transform.scale.value.0;
+        if scale.min_element() <= 0.0 {
+            return Err(self.error(&transform.scale.referenced, "a scale must be > 0"));
+        }
+        let r = transform.rotate.0 * (std::f32::consts::PI / 180.0);
+        let rotation =
+            Quat::from_rotation_z(r.z) * Quat::from_rotation_y(r.y) * Quat::from_rotation_x(r.x);
+        let placed = scale
+            .max_element()
+            .max(transform.translate.0.abs().max_element());
+        if !within_reach(placed) {
+            return Err(self.error(at, beyond_reach(placed)));
+        }
+        let matrix = Mat4::from_scale_rotation_translation(scale, rotation, transform.translate.0);
+        let path = self.resolve(file, "mesh")?;
+        let obj = load_obj(&path, &matrix)?;
+        self.warnings.extend(obj.warning);
+        let mut patches = Vec::new();
+        let mut lo = Vec3::splat(f32::INFINITY);
+        let mut hi = Vec3::splat(f32::NEG_INFINITY);
+        for tri in &obj.triangles {
+            for v in tri {
+                lo = lo.min(*v);
+                hi = hi.max(*v);
             }
-            ShapeSpec::Quad {
-                origin,
-                edge1,
-                edge2,
-                ..
+            if emits {
+                let n = (tri[1] - tri[0])
+                    .cross(tri[2] - tri[0])
+                    .normalize_or(Vec3::Z);
+                patches.push(Patch::Triangle { v: *tri, n });
+            }
+        }
+        let count = obj.triangles.len();
+        let target = parts.geometry(is_boundary);
+        target.triangles.extend(obj.triangles);
+        target
+            .triangle_shapes
+            .extend(std::iter::repeat_n(shape_id, count));
+        Ok(Placed {
+            patches,
+            bounds: (lo, hi),
+            reach: lo.abs().max(hi.abs()).max_element(),
+        })
+    }
+
+    /// Hair fibres of `radius` along the polylines of a strand file or a generated ball of
+    /// strands; refused beyond the scene's limits on strands, segments and fibres.
+    fn fibres(
+        &self,
+        at: &Location,
+        source: &StrandsSpec,
+        radius: f32,
+        shape_id: u32,
+        parts: &mut Parts,
+    ) -> Result<Placed, SceneError> {
+        let polylines = match source {
+            StrandsSpec::File(f) => strands::load_strands(&self.resolve(f, "strand file")?)?,
+            StrandsSpec::Ball {
+                center,
+                radius: ball_radius,
+                count,
+                length,
+                segments,
+                curl,
+                seed,
             } => {
-                let q = Quad::new(origin.0, edge1.0, edge2.0, shape_id).ok_or_else(|| {
-                    self.error(&at, "the quad's edges are parallel or zero: it has no area")
-                })?;
-                patches.push(Patch::quad(&q));
-                bounds = (Vec3::ZERO, Vec3::ZERO);
-                let corners =
-                    [0.0, 1.0].map(|a| [0.0, 1.0].map(|b| q.origin + a * q.edge1 + b * q.edge2));
-                reach = farthest(corners.iter().flatten());
-                parts.surfaces.quads.push(q);
-            }
-            ShapeSpec::Box { min, max, .. } => {
-                let (lo, hi) = (min.0, max.0);
-                if !(lo.cmplt(hi).all()) {
-                    return Err(self.error(&at, "a box needs min < max on every axis"));
-                }
-                reach = lo.abs().max(hi.abs()).max_element();
-                for q in box_quads(lo, hi, shape_id) {
-                    patches.push(Patch::quad(&q));
-                    if is_boundary {
-                        &mut parts.boundaries
-                    } else {
-                        &mut parts.surfaces
-                    }
-                    .quads
-                    .push(q);
-                }
-                bounds = (lo, hi);
-            }
-            ShapeSpec::Mesh {
-                file, transform, ..
-            } => {
-                let scale = transform.scale.value.0;
-                if scale.min_element() <= 0.0 {
-                    return Err(self.error(&transform.scale.referenced, "a scale must be > 0"));
-                }
-                let r = transform.rotate.0 * (std::f32::consts::PI / 180.0);
-                let rotation = Quat::from_rotation_z(r.z)
-                    * Quat::from_rotation_y(r.y)
-                    * Quat::from_rotation_x(r.x);
-                let placed = scale
-                    .max_element()
-                    .max(transform.translate.0.abs().max_element());
-                if !within_reach(placed) {
-                    return Err(self.error(&at, beyond_reach(placed)));
-                }
-                let matrix =
-                    Mat4::from_scale_rotation_translation(scale, rotation, transform.translate.0);
-                let path = self.resolve(file, "mesh")?;
-                let obj = load_obj(&path, &matrix)?;
-                self.warnings.extend(obj.warning);
-                let mut lo = Vec3::splat(f32::INFINITY);
-                let mut hi = Vec3::splat(f32::NEG_INFINITY);
-                for tri in &obj.triangles {
-                    for v in tri {
-                        lo = lo.min(*v);
-                        hi = hi.max(*v);
-                    }
-                    if emission.is_some() {
-                        let n = (tri[1] - tri[0])
-                            .cross(tri[2] - tri[0])
-                            .normalize_or(Vec3::Z);
-                        patches.push(Patch::Triangle { v: *tri, n });
-                    }
-                }
-                bounds = (lo, hi);
-                reach = lo.abs().max(hi.abs()).max_element();
-                let count = obj.triangles.len();
-                let target = if is_boundary {
-                    &mut parts.boundaries
-                } else {
-                    &mut parts.surfaces
-                };
-                target.triangles.extend(obj.triangles);
-                target
-                    .triangle_shapes
-                    .extend(std::iter::repeat_n(shape_id, count));
-            }
-            ShapeSpec::Fibres {
-                strands: source,
-                radius,
-                ..
-            } => {
-                let polylines = match source {
-                    StrandsSpec::File(f) => {
-                        strands::load_strands(&self.resolve(f, "strand file")?)?
-                    }
-                    StrandsSpec::Ball {
-                        center,
-                        radius: ball_radius,
-                        count,
-                        length,
-                        segments,
-                        curl,
-                        seed,
-                    } => {
-                        if !(1..=MAX_STRANDS).contains(&count.value) {
-                            return Err(self.error(
-                                &count.referenced,
-                                format!(
-                                    "count must be from 1 to {MAX_STRANDS}, found {}",
-                                    count.value
-                                ),
-                            ));
-                        }
-                        if !(1..=MAX_STRAND_SEGMENTS).contains(&segments.value) {
-                            return Err(self.error(
-                                &segments.referenced,
-                                format!(
-                                    "segments must be from 1 to {MAX_STRAND_SEGMENTS}, found {}",
-                                    segments.value
-                                ),
-                            ));
-                        }
-                        strands::ball(
-                            center.0,
-                            ball_radius.0,
-                            count.value as usize,
-                            length.0,
-                            segments.value as usize,
-                            curl.map_or(0.0, |c| c.0),
-                            *seed,
-                        )
-                    }
-                };
-                reach = farthest(polylines.iter().flatten()) + radius.0;
-                for line in &polylines {
-                    for pair in line.windows(2) {
-                        parts.surfaces.fibres.push(FibreSegment {
-                            a: pair[0],
-                            b: pair[1],
-                            radius: radius.0,
-                        });
-                        parts.surfaces.fibre_shapes.push(shape_id);
-                    }
-                }
-                if parts.surfaces.fibres.len() > strands::MAX_SEGMENTS {
+                if !(1..=MAX_STRANDS).contains(&count.value) {
                     return Err(self.error(
-                        &at,
+                        &count.referenced,
                         format!(
-                            "too many fibre segments (at most {} in a scene)",
-                            strands::MAX_SEGMENTS
+                            "count must be from 1 to {MAX_STRANDS}, found {}",
+                            count.value
                         ),
                     ));
                 }
-                bounds = (Vec3::ZERO, Vec3::ZERO);
+                if !(1..=MAX_STRAND_SEGMENTS).contains(&segments.value) {
+                    return Err(self.error(
+                        &segments.referenced,
+                        format!(
+                            "segments must be from 1 to {MAX_STRAND_SEGMENTS}, found {}",
+                            segments.value
+                        ),
+                    ));
+                }
+                strands::ball(
+                    center.0,
+                    ball_radius.0,
+                    count.value as usize,
+                    length.0,
+                    segments.value as usize,
+                    curl.map_or(0.0, |c| c.0),
+                    *seed,
+                )
+            }
+        };
+        let reach = farthest(polylines.iter().flatten()) + radius;
+        for line in &polylines {
+            for pair in line.windows(2) {
+                parts.surfaces.fibres.push(FibreSegment {
+                    a: pair[0],
+                    b: pair[1],
+                    radius,
+                });
+                parts.surfaces.fibre_shapes.push(shape_id);
             }
         }
-
-        if !within_reach(reach) {
-            return Err(self.error(&at, beyond_reach(reach)));
-        }
-        let eye_inside = match &spanned.value {
-            ShapeSpec::Sphere { center, radius, .. } => (eye - center.0).length() < radius.0,
-            ShapeSpec::Box { min, max, .. } => eye.cmpgt(min.0).all() && eye.cmplt(max.0).all(),
-            _ => false,
-        };
-        if medium_spec.is_some() && eye_inside {
+        if parts.surfaces.fibres.len() > strands::MAX_SEGMENTS {
             return Err(self.error(
-                &at,
-                "the camera is inside this medium: media must not contain the camera",
+                at,
+                format!(
+                    "too many fibre segments (at most {} in a scene)",
+                    strands::MAX_SEGMENTS
+                ),
             ));
         }
-        let medium = match medium_spec {
-            Some(m) => {
-                parts.media.push(self.medium(m, bounds)?);
-                Some(parts.media.len() as u32 - 1)
-            }
-            None => None,
-        };
-        if let Some(radiance) = emission {
-            parts.lights.push(Light::area(shape_id, radiance, patches));
-        }
-        parts.shapes.push(ShapeInfo {
-            material,
-            emission: emission.unwrap_or(Vec3::ZERO),
-            medium,
-        });
-        Ok(())
+        Ok(Placed {
+            patches: Vec::new(),
+            bounds: (Vec3::ZERO, Vec3::ZERO),
+            reach,
+        })
     }
+}
+
+/// A sphere; its one patch is the whole sphere.
+fn sphere(
+    center: Vec3,
+    radius: f32,
+    shape_id: u32,
+    is_boundary: bool,
+    parts: &mut Parts,
+) -> Placed {
+    let s = Sphere {
+        center,
+        radius,
+        shape: shape_id,
+    };
+    let placed = Placed {
+        patches: vec![Patch::sphere(&s)],
+        bounds: (s.center - s.radius, s.center + s.radius),
+        reach: s.center.abs().max_element() + s.radius,
+    };
+    parts.geometry(is_boundary).spheres.push(s);
+    placed
+}
+
+/// A shape's surface as its scene entry gives it ([`Builder::surface`]).
+struct Surface<'s> {
+    /// Its material; black for an emitter given none, `None` for a medium's boundary.
+    material: Option<u32>,
+    /// The medium it bounds.
+    medium: Option<&'s Spanned<MediumSpec>>,
+    /// The radiance it emits.
+    emission: Option<Vec3>,
+}
+
+/// What building one shape's geometry tells [`Builder::shape`].
+struct Placed {
+    /// Its light patches, for an area light when it emits.
+    patches: Vec<Patch>,
+    /// Its bounding box: the extent of a medium it bounds (zero for shapes that bound none).
+    bounds: (Vec3, Vec3),
+    /// How far from the origin it reaches, checked against [`MAX_REACH`] before anything
+    /// builds a BVH over it.
+    reach: f32,
 }
 
 /// The six faces of the box `[lo, hi]`, normals pointing out.
