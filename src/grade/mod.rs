@@ -5,23 +5,30 @@
 //!   with an absolute + relative [`tolerance`]; NaN never passes.
 //! - [`sampling`]: Pearson χ² of a student's direction sampler against the reference
 //!   density over cells of equal solid angle ([`stats`] holds the tests).
-//! - [`estimator`]: Student's t-test of an estimator against an analytic value.
-//! - [`image_check`]: per-pixel z-test of a render against the reference.
+//! - [`estimator`]: Student's t-test of an estimator against an analytic value;
+//!   [`variance_pair`] and [`variance_check`]: two estimators' variances against a bound.
+//! - [`image_check`]: per-pixel z-test of a render ([`renders`]) against the stored
+//!   reference render ([`render_check`]).
 //! - [`stability`]: extreme inputs must give finite values in range.
 //!
 //! [`power`] measures how large an error the statistical kinds catch, and
 //! [`calibration`] how often they fail correct code.
 //!
 //! # Data
-//! [`catalogue`] says which inputs each task is graded on, drawn from each task's declared
-//! [`domain`] with a bias toward its boundaries; [`expected`] stores the
-//! reference's answers (insta snapshots embedded at build time), so the handout grades
-//! without solutions. [`checks`] runs a task's checks on any implementation.
+//! [`catalogue`] holds what each task's folder declares (its [`domain`], cases, samplers,
+//! estimators); [`value_cases`] draws the value cases from the domains, with a bias toward
+//! their boundaries and special points, and evaluates them on the reference; [`expected`]
+//! stores the reference's answers (insta snapshots embedded at build time), so the handout
+//! grades without solutions. [`checks`] judges and scores a task's checks.
 //!
-//! # Isolation
-//! [`runner`] grades each task in its own worker process ([`worker`] is the child side,
-//! [`isolation`] the parent side): a panic, an endless loop, a stack overflow, an abort, a
-//! runaway allocation or an early `exit` in student code costs that task and nothing else.
+//! # Two sides
+//! Student code runs only in a worker process: [`worker`] (the child side, in [`sandbox`])
+//! runs a task's checks through [`measure`] and sends back raw outputs, never a verdict;
+//! what crosses is [`wire`]. [`runner`] grades each task in its own worker ([`isolation`]
+//! is the parent side) and judges the outputs against the expected data, which no
+//! worker-side file can import (`src/ARCHITECTURE.md` tags each file with its side, and a
+//! test holds it): a panic, an endless loop, a stack overflow, an abort, a runaway
+//! allocation or an early `exit` in student code costs that task and nothing else.
 
 pub mod build_view;
 pub mod calibration;

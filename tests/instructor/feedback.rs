@@ -237,3 +237,29 @@ fn no_expected_value_reaches_a_student_at_actual_or_none_and_no_hidden_case_at_a
     let none = text(&redact(&full, Feedback::None), Detail::Verbose);
     assert!(!none.contains(": got "), "{none}");
 }
+
+/// A check's name is shown at every feedback level, so no name writes the value its check
+/// expects: an estimator is named by what it estimates, never by its analytic answer. (A
+/// number of three or more significant digits in a name, within 1e-3 of the answer, is
+/// the answer; shorter ones are the inputs a name states, `ρ = 0.5`.)
+#[test]
+fn no_estimator_is_named_with_the_value_it_expects() {
+    crate::support::install();
+    let reference = pbrlab::implementation::reference();
+    let digits = |n: &str| n.trim_start_matches(['0', '.']).replace('.', "").len();
+    let mut named = Vec::new();
+    for task in TaskId::ALL {
+        for spec in pbrlab::grade::catalogue::estimators(task, reference) {
+            let answer = spec.analytic;
+            let written = spec.name.split(|c: char| !(c.is_ascii_digit() || c == '.'));
+            if written
+                .filter(|n| n.contains('.') && digits(n) >= 3)
+                .filter_map(|n| n.trim_end_matches('.').parse::<f64>().ok())
+                .any(|x| (x - answer).abs() <= 1e-3 * answer.abs())
+            {
+                named.push(format!("{task}: {} (expects {answer})", spec.name));
+            }
+        }
+    }
+    assert!(named.is_empty(), "{named:#?}");
+}

@@ -277,7 +277,7 @@ fn coloured_furnace_spec<'a, T: Tasks>(t: &'a T, render: &str) -> EstimatorSpec<
 fn depth_spec<T: Tasks>(t: &T, depth: i32, analytic: f64) -> EstimatorSpec<'_> {
     let render = "{spp: 1, max_depth: 8, rr_depth: 100, strategy: mis, heuristic: power, seed: 0}";
     EstimatorSpec {
-        name: format!("white furnace, ρ = 0.5, called with depth {depth}: {analytic}"),
+        name: format!("white furnace, ρ = 0.5, called with depth {depth}"),
         analytic,
         samples: if depth < 1 { 2_000 } else { 20_000 },
         estimate: path_estimator_at(t, furnace(0.5, render), depth, Vec3::ZERO, |s| {
