@@ -34,6 +34,9 @@
 //! # Edge cases
 //! - Return finite, non-negative values; a NaN ruins the pixel (the renderer drops it).
 //! - `q` can be 0 (a black continuation): stop without dividing.
+//! - A path ends only by `depth` and by roulette, never because its weight is small: a
+//!   bounce off a dark surface (weight 1e-4) may still carry all the light there is (a dark
+//!   mirror under a bright sky).
 //! - `bounce` is `None` whenever the BSDF absorbs the path: an emitter without a material
 //!   (it reflects nothing) and surfaces whose sampling failed (a glossy lobe below the
 //!   horizon). The emission and direct light of that step still count.

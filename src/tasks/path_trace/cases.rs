@@ -165,6 +165,47 @@ fn sky() -> String {
     format!("environment: {{radiance: {EMISSION}}}")
 }
 
+/// How much darker than a mirror the dark mirror of [`dark_mirror_spec`] is, and how much
+/// brighter than [`sky`] its sky.
+const DARKNESS: f64 = 1e4;
+
+/// A floor that is a mirror of reflectance `1 / DARKNESS`, and above it a perfect mirror
+/// tilted 45° about y that turns light from the floor sideways, to a sky `DARKNESS` times
+/// brighter than [`sky`]. Seen straight down, a path's first bounce has the weight 1e-4 and
+/// all the light comes through it and the second mirror (a mirror gets no light sample), so
+/// the radiance is `R Le` = [`EMISSION`] exactly. Code that ends a path because its weight
+/// is small, rather than by depth or roulette, returns 0.
+fn dark_mirror_spec<'a, T: Tasks>(t: &'a T, render: &str) -> EstimatorSpec<'a> {
+    let text = format!(
+        "camera: {{eye: [0, 0, 1], target: [0, 0, 0], up: [0, 1, 0], fov: 60, width: 4, height: 4}}
+render: {render}
+materials:
+  dark: {{mirror: {{reflectance: {reflectance}}}}}
+  bright: {{mirror: {{reflectance: 1}}}}
+shapes:
+  - quad: {{origin: [-10, -10, 0], edge1: [20, 0, 0], edge2: [0, 20, 0], material: dark}}
+  - quad: {{origin: [-0.5, -1, 1.5], edge1: [0, 2, 0], edge2: [1, 0, 1], material: bright}}
+lights:
+  - environment: {{radiance: {sky}}}
+",
+        reflectance = 1.0 / DARKNESS,
+        sky = EMISSION * DARKNESS
+    );
+    EstimatorSpec {
+        name: "a mirror of reflectance 1e-4 seeing a sky 1e4 times brighter through a second \
+               mirror, depth 4: R Le (a bounce of tiny weight still carries light)"
+            .into(),
+        analytic: EMISSION,
+        samples: 2_000,
+        estimate: path_estimator(
+            t,
+            load(&text, "<grader dark mirror>"),
+            Vec3::Z,
+            |_| -Vec3::Z,
+        ),
+    }
+}
+
 /// The point light of [`floor_under`] in the scene format.
 fn point_light() -> String {
     let ([x, y, z], intensity) = POINT;
@@ -454,6 +495,7 @@ pub fn estimators<T: Tasks>(t: &T) -> Vec<EstimatorSpec<'_>> {
                 |_| -Vec3::Z,
             ),
         },
+        dark_mirror_spec(t, &without_roulette(4)),
         EstimatorSpec {
             // Four segments: the camera ray, the bounce off the floor, and two that escape.
             name: "a floor (ρ = 0.5) under a sky, depth 4: ρ Le, the sky counted once".into(),

@@ -43,6 +43,10 @@ pub fn wrong() -> Vec<Variant> {
         ),
         flawed!("a scalar throughput", ScalarThroughput),
         flawed!("black where mis gives no bounce", BlackWithoutBounce),
+        flawed!(
+            "a path ended where its bounce's weight is below 0.01",
+            CutBelowWeight
+        ),
     ]
 }
 
@@ -143,6 +147,9 @@ enum PathFlaw {
     ScalarThroughput,
     /// Black returned when `mis` gives no bounce, losing the light gathered so far.
     BlackWithoutBounce,
+    /// A path ended, without roulette's compensation, where the bounce's weight falls
+    /// below 0.01: light that arrives through a dark bounce is lost.
+    CutBelowWeight,
 }
 
 fn path_variant(
@@ -192,6 +199,9 @@ fn path_variant(
     } else {
         bounce.weight
     };
+    if flaw == PathFlaw::CutBelowWeight && weight.max_element() < 0.01 {
+        return radiance;
+    }
     if scene.settings().roulette_applies(depth) {
         let q = match flaw {
             PathFlaw::UncappedSurvival => weight.max_element(),
