@@ -149,6 +149,7 @@ fn stub_folder(exercises: &Path) -> PathBuf {
 }
 
 /// What one round of cargo reported.
+#[derive(Default)]
 struct Round {
     success: bool,
     /// Per exercise file at fault, its messages.
@@ -681,13 +682,7 @@ fn read_messages(
 ) -> std::sync::mpsc::Receiver<Round> {
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
-        let mut round = Round {
-            success: false,
-            blamed: BTreeMap::new(),
-            errors: Vec::new(),
-            worker: None,
-            binaries: Vec::new(),
-        };
+        let mut round = Round::default();
         let mut reader = BufReader::new(stdout);
         while let Some(line) = super::isolation::read_line(&mut reader) {
             read_message(&line, &exercises, echo, &mut round);
@@ -945,13 +940,7 @@ mod tests {
                 "children": [{"spans": [{"file_name": "src/integrator/mis.rs"}]}]
             }
         });
-        let mut round = Round {
-            success: false,
-            blamed: BTreeMap::new(),
-            errors: Vec::new(),
-            worker: None,
-            binaries: Vec::new(),
-        };
+        let mut round = Round::default();
         read_message(&line.to_string(), &exercises, false, &mut round);
         assert_eq!(
             round.blamed.keys().copied().collect::<Vec<_>>(),
