@@ -522,7 +522,11 @@ impl ClassRun<'_> {
         let (status, message, report) = match grade(&options, &launcher) {
             Ok(mut report) => {
                 report.variant = variant.map(|v| v.id);
-                (SubmissionStatus::Graded, String::new(), Some(report))
+                (
+                    SubmissionStatus::Graded,
+                    empty_note(&built.intake),
+                    Some(report),
+                )
             }
             Err(e) => (SubmissionStatus::NotGraded, format!("{e:#}"), None),
         };
@@ -552,11 +556,17 @@ impl ClassRun<'_> {
         let file = self.result_file(&result.student);
         if let Some(report) = &result.report {
             let shown = redact(report, self.feedback);
-            crate::atomic_file::write(
-                &file.with_extension("txt"),
-                crate::grade::report::text(&shown, crate::grade::report::Detail::Verbose)
-                    .as_bytes(),
-            )?;
+            // Why a grade is what it is when the submission itself explains it (no exercise
+            // file in it), then what was ignored, then the report.
+            let mut text = result.message.clone();
+            if !text.is_empty() {
+                text += "\n";
+            }
+            for line in &result.ignored {
+                text += &format!("ignored: {line}\n");
+            }
+            text += &crate::grade::report::text(&shown, crate::grade::report::Detail::Verbose);
+            crate::atomic_file::write(&file.with_extension("txt"), text.as_bytes())?;
             crate::grade::report::write_html(&shown, &file.with_extension(""))?;
         }
         let json = serde_json::to_string_pretty(result)?;
@@ -623,6 +633,18 @@ impl ClassRun<'_> {
             gradebook::moodle(&results, &entries, &roster)?.as_bytes(),
         )?;
         Ok(())
+    }
+}
+
+/// The note of a graded submission that holds no exercise file: every task was graded as
+/// its shipped stub (empty otherwise).
+fn empty_note(intake: &Intake) -> String {
+    if intake.taken.is_empty() {
+        "no exercise file (<task>.rs) in the submission: every task was graded as its \
+         shipped stub"
+            .into()
+    } else {
+        String::new()
     }
 }
 
@@ -698,7 +720,10 @@ pub fn entry_summary(results: &[StudentResult], entries: &[String]) -> String {
         s += "Not graded means the grading machinery failed, not the submission: the same \
               command grades these again.\n\n";
     }
-    for r in results.iter().filter(|r| r.report.is_none()) {
+    for r in results
+        .iter()
+        .filter(|r| r.report.is_none() || !r.message.is_empty())
+    {
         let _ = writeln!(
             s,
             "- {} {}: {}",

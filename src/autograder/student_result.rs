@@ -45,7 +45,8 @@ pub struct StudentResult {
     pub student: String,
     /// How the run ended, with the reason in `message`.
     pub status: SubmissionStatus,
-    /// Why the submission was not graded, if it was not.
+    /// Why the submission was not graded, if it was not; for a graded one, what explains its
+    /// grade (a submission with no exercise file in it), else empty.
     pub message: String,
     /// The files graded, as found in the submission.
     pub taken: Vec<String>,

@@ -230,6 +230,10 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     let wrong = right.replace("2.0 * c / (c + root)", "2.0 * c / (c + root + 0.01)");
     assert_ne!(wrong, right);
     std::fs::write(bob.join("smith_g1.rs"), &wrong).unwrap();
+    // Cy handed in notes and no exercise file: graded as the stubs, and told so.
+    let cy = submissions.join("cy");
+    std::fs::create_dir_all(&cy).unwrap();
+    std::fs::write(cy.join("notes.txt"), "my answers are in my head\n").unwrap();
     // The seed from a file, as the README has it (a command line is every user's to read).
     let seed = dir.path().join("seed");
     std::fs::write(&seed, "7\n").unwrap();
@@ -245,10 +249,28 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     grade_class(false);
     let first = read_json(&out.join("students/bob.json"));
     assert_eq!(first["status"], "graded", "{first}");
+    let empty = read_json(&out.join("students/cy.json"));
+    assert!(
+        empty["message"]
+            .as_str()
+            .unwrap()
+            .contains("no exercise file"),
+        "{empty}"
+    );
+    let feedback = std::fs::read_to_string(out.join("students/cy.txt")).unwrap();
+    assert!(
+        feedback.starts_with("no exercise file") && feedback.contains("ignored: notes.txt"),
+        "{feedback}"
+    );
+    let summary = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(
+        summary.contains("- cy graded: no exercise file"),
+        "{summary}"
+    );
     // The same files and seed: nothing changes.
     let changes = grade_class(true);
     assert!(
-        changes.contains("2 submissions regraded: 2 unchanged, 0 changed"),
+        changes.contains("3 submissions regraded: 3 unchanged, 0 changed"),
         "{changes}"
     );
     let history: Vec<PathBuf> = std::fs::read_dir(out.join("history"))
@@ -266,7 +288,7 @@ fn a_regrade_lists_what_changed_keeps_the_old_results_and_changes_nothing_for_th
     std::thread::sleep(std::time::Duration::from_secs(1));
     let changes = grade_class(true);
     assert!(
-        changes.contains("1 unchanged, 1 changed (1 up"),
+        changes.contains("2 unchanged, 1 changed (1 up"),
         "{changes}"
     );
     assert!(changes.contains("## bob"), "{changes}");
