@@ -172,13 +172,19 @@ impl Param {
             })
     }
 
-    /// Whether `value` is one of the special values, up to the rounding of a quantity
-    /// derived in f64 from f32 inputs (a relative 1e-6: `cos θ` of a `w` whose `z` is
-    /// 1e-10 and whose length is 1 − 6e-8).
+    /// Whether `value` is one of the special values ([`Param::special_at`]).
     pub fn is_special(&self, value: f64) -> bool {
+        self.special_at(value).is_some()
+    }
+
+    /// The special value `value` is, up to the rounding of a quantity derived in f64 from
+    /// f32 inputs (a relative 1e-6: `cos θ` of a `w` whose `z` is 1e-10 and whose length is
+    /// 1 − 6e-8); `None` when it is none of them.
+    pub fn special_at(&self, value: f64) -> Option<f64> {
         self.special
             .iter()
-            .any(|s| (value - s).abs() <= 1e-6 * s.abs())
+            .copied()
+            .find(|s| (value - s).abs() <= 1e-6 * s.abs())
     }
 
     /// The boundaries inside the range that draws land on exactly (none when left open).

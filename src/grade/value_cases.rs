@@ -48,7 +48,7 @@ pub fn position(call: &Call) -> Option<String> {
                 )
             };
             near.push((distance, text));
-        } else if p.special.contains(&v) {
+        } else if p.special_at(v).is_some() {
             named.push(format!(
                 "{} = {}, a value the exercise names",
                 p.name,
@@ -82,7 +82,7 @@ pub fn region(call: &Call) -> String {
         let Some(v) = (p.value)(call) else { continue };
         // A special value first: a cosine of 1e-45 lies within rounding of the horizon
         // but is a point of its own.
-        if let Some(s) = p.special_values().find(|s| (v - s).abs() <= 1e-6 * s.abs()) {
+        if let Some(s) = p.special_at(v).filter(|s| (p.lo..=p.hi).contains(s)) {
             return format!("{} = {}", p.name, fmt_num(s));
         }
         if let Some((b, distance)) = p.nearest_boundary(v) {
