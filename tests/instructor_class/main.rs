@@ -165,12 +165,20 @@ fn a_class_run_bounds_a_compile_time_bomb_and_retries_what_was_not_graded() {
         r#"{"student": "honest", "status": "not graded", "message": "the build did not finish"}"#,
     )
     .unwrap();
+    // This run's scratch folders in a folder of its own (other tests run classes at the
+    // same time), which, like /tmp, lets a worker of another user through.
+    let scratch = tempfile::Builder::new()
+        .prefix("pbrlab-bomb-run-")
+        .permissions(std::os::unix::fs::PermissionsExt::from_mode(0o711))
+        .tempdir()
+        .unwrap();
     let run = || {
         let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
             .arg("grade-class")
             .arg(&submissions)
             .arg("--out")
             .arg(&out)
+            .env("TMPDIR", scratch.path())
             .output()
             .unwrap();
         let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
@@ -208,7 +216,7 @@ fn a_class_run_bounds_a_compile_time_bomb_and_retries_what_was_not_graded() {
         assert_bounded(&read_json(&out.join(format!("students/{name}.json"))));
     }
     assert_eq!(
-        processes_mentioning("pbrlab-class-"),
+        processes_mentioning(&scratch.path().to_string_lossy()),
         Vec::<String>::new(),
         "no compiler outlives the class run"
     );
