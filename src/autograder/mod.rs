@@ -1,4 +1,5 @@
-//! Grading a whole class: autograder packages for Gradescope and PrairieLearn, and batch
+//! Grading a whole class: autograder packages for Gradescope and PrairieLearn, a GitHub
+//! Classroom template repository ([`github_classroom`]: public cases only), and batch
 //! regrades (`grade-class`). Every submission is graded the same way: only its exercise
 //! files are taken ([`submission`]), written over the shipped stubs in a scratch folder,
 //! built into a worker of its own with a compile error costing only its task
@@ -7,6 +8,7 @@
 
 pub mod class;
 pub mod config;
+pub mod github_classroom;
 pub mod gradebook;
 pub mod item_analysis;
 pub mod package;

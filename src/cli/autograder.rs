@@ -1,5 +1,5 @@
-//! `pbrlab autograder`: write a Gradescope or PrairieLearn package, and (inside one) grade a
-//! submission.
+//! `pbrlab autograder`: write a Gradescope or PrairieLearn package or a GitHub Classroom
+//! template repository, and (inside a package) grade a submission.
 
 use crate::autograder::config::Config;
 use crate::autograder::package;
@@ -23,6 +23,9 @@ pub enum Step {
     Gradescope(PackageArgs),
     /// Write a PrairieLearn external grader (a Dockerfile) and an example question.
     Prairielearn(PackageArgs),
+    /// Write a GitHub Classroom template repository: the student handout and a workflow
+    /// that grades the public cases on every push and reports each task's points.
+    GithubClassroom(super::handout::Args),
     /// Grade one submission inside a package (what its scripts call).
     #[command(hide = true)]
     Run(RunArgs),
@@ -82,6 +85,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     match args.command {
         Step::Gradescope(p) => write(root, p, Service::Gradescope),
         Step::Prairielearn(p) => write(root, p, Service::Prairielearn),
+        Step::GithubClassroom(h) => {
+            let files = super::handout::write_student_repository(
+                &h.dir,
+                h.without_reference,
+                crate::autograder::github_classroom::write,
+            )?;
+            eprintln!(
+                "wrote {files} files into {}\nnext: push it to a new GitHub repository, mark \
+                 it a template, and choose it as the assignment's starter code in GitHub \
+                 Classroom (README: GitHub Classroom)",
+                h.dir.display()
+            );
+            Ok(())
+        }
         Step::Run(r) => {
             let config = match Config::load(&r.config) {
                 Ok(config) => config,

@@ -1,7 +1,7 @@
 use crate::handout;
 use crate::worksheet::task_functions;
 use anyhow::bail;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `pbrlab handout`.
 #[derive(clap::Args, Debug)]
@@ -16,6 +16,24 @@ pub struct Args {
 
 /// Writes the student repository.
 pub fn run(args: Args) -> anyhow::Result<()> {
+    let files = write_student_repository(&args.dir, args.without_reference, handout::write)?;
+    println!(
+        "Wrote {files} files to {}. Check it builds: cd {} && cargo test --release",
+        args.dir.display(),
+        args.dir.display()
+    );
+    Ok(())
+}
+
+/// Writes a student repository into `dir` with `write` (the handout's files, or a template
+/// repository's, which are the handout's and more), after checking that the exercises are
+/// still the committed stubs; adds the compiled reference unless `without_reference`, and
+/// makes the first commit. Returns how many files `write` wrote.
+pub fn write_student_repository(
+    dir: &Path,
+    without_reference: bool,
+    write: fn(&Path, &Path) -> anyhow::Result<Vec<PathBuf>>,
+) -> anyhow::Result<usize> {
     if !cfg!(feature = "solutions") {
         bail!("this is already a handout: run `pbrlab handout` from the instructor repository");
     }
@@ -32,24 +50,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             written.join(", ")
         );
     }
-    let files = handout::write(root, &args.dir)?;
-    if !args.without_reference {
+    let files = write(root, dir)?;
+    if !without_reference {
         eprintln!(
             "Compiling the reference into a shared library for mixed renders (on this \
              repository's build of the framework; cargo shows its progress)…"
         );
-        let library = handout::compiled_reference::build(root, &args.dir)?;
+        let library = handout::compiled_reference::build(root, dir)?;
         eprintln!("Wrote {}", library.display());
     }
     // Without git the handout still works; only `pbrlab reset` needs the first commit.
-    if let Err(e) = handout::stubs::commit(&args.dir) {
+    if let Err(e) = handout::stubs::commit(dir) {
         eprintln!("warning: the handout is not a git repository ({e:#}); `pbrlab reset` needs one");
     }
-    println!(
-        "Wrote {} files to {}. Check it builds: cd {} && cargo test --release",
-        files.len(),
-        args.dir.display(),
-        args.dir.display()
-    );
-    Ok(())
+    Ok(files.len())
 }

@@ -1,15 +1,14 @@
 //! Which files of the instructor repository go into the student handout, and how
 //! Cargo.toml changes there.
 //!
-//! Left out: `solutions/`, build output and local state, instructor tests (files named
-//! `instructor_*`, and any test or bench that uses the reference: it would not build
-//! without it, and may contain correct code), support folders only those tests use, the
-//! tests' variants of each task (`src/tasks/<task>/variants.rs`: they hold correct
-//! implementations) and its reference library (`library.rs`, built from `solutions/`), and
-//! insta snapshots of tests that are left out. The grader's data
-//! stays (each task's `src/tasks/<task>/expected.snap` and `tests/snapshots/renders/`): it
-//! holds the public cases and the reference renders only, which is what lets the handout
-//! grade without solutions.
+//! Left out: `solutions/`, build output and local state, every test but the student's
+//! ([`STUDENT_TESTS`]: the framework's own tests stay with the instructor, and many use the
+//! reference), any bench that uses the reference, the tests' variants of each task
+//! (`src/tasks/<task>/variants.rs`: they hold correct implementations) and its reference
+//! library (`library.rs`, built from `solutions/`). The grader's data stays (each task's
+//! `src/tasks/<task>/expected.snap` and `tests/snapshots/renders/`): it holds the public
+//! cases and the reference renders only, which is what lets the handout grade without
+//! solutions.
 
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
@@ -89,86 +88,39 @@ fn files_under(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) -> anyhow::Resul
     Ok(())
 }
 
-/// Applies the rules for `tests/` to the candidate files under it.
-///
-/// A test target is a file `tests/<name>.rs` or a folder `tests/<name>/` with a `main.rs`
-/// and its modules. A target is kept unless its name starts with `instructor` or one of its
-/// files needs the reference. A folder that is not a target (support code of single-file
-/// targets) is kept when a kept target declares it (`mod <folder>;`). Of `tests/snapshots/`,
-/// the grader's data is kept, and the insta snapshots of kept single-file targets.
-fn select_tests(root: &Path, candidates: Vec<PathBuf>) -> anyhow::Result<Vec<PathBuf>> {
-    let tests = Path::new("tests");
-    // Each candidate's first component under tests/ (`name.rs` or a folder).
-    let top = |file: &Path| -> Option<String> {
-        let first = file.strip_prefix(tests).ok()?.components().next()?;
-        Some(first.as_os_str().to_string_lossy().into_owned())
-    };
-    let is_target = |first: &str| {
-        first.ends_with(".rs") || root.join(tests).join(first).join("main.rs").is_file()
-    };
-    let mut sources: std::collections::BTreeMap<String, Vec<String>> = Default::default();
-    for file in &candidates {
-        if let Some(first) = top(file)
-            && first != "snapshots"
-            && is_target(&first)
-            && file.extension().is_some_and(|e| e == "rs")
-        {
-            sources
-                .entry(first)
-                .or_default()
-                .push(std::fs::read_to_string(root.join(file))?);
-        }
-    }
-    let kept_targets: Vec<(String, Vec<String>)> = sources
-        .into_iter()
-        .filter(|(first, texts)| {
-            !first.starts_with("instructor") && !texts.iter().any(|t| needs_solutions(t))
-        })
-        .collect();
-    let kept_target = |first: &str| kept_targets.iter().any(|(t, _)| t == first);
-    let uses_module = |module: &str| {
-        kept_targets
-            .iter()
-            .flat_map(|(_, texts)| texts)
-            .any(|text| text.contains(&format!("mod {module};")))
-    };
-    Ok(candidates
+/// The test target the handout keeps: the student's tests, one per task, which grade
+/// `exercises/` with the grader (`tests/exercises.rs`). Every other test is the
+/// framework's own and stays in the instructor repository: a student cannot act on it.
+pub const STUDENT_TESTS: &str = "tests/exercises.rs";
+
+/// Applies the rules for `tests/` to the candidate files under it: the student's tests
+/// ([`STUDENT_TESTS`]) and the grader's data under `tests/snapshots/`.
+fn select_tests(candidates: Vec<PathBuf>) -> Vec<PathBuf> {
+    let data = Path::new("tests/snapshots");
+    candidates
         .into_iter()
         .filter(|file| {
-            let Some(first) = top(file) else {
-                return false;
-            };
-            if first == "snapshots" {
-                let second = file
-                    .strip_prefix(tests.join("snapshots"))
-                    .ok()
-                    .and_then(|r| r.components().next())
-                    .map(|c| c.as_os_str().to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                return GRADER_DATA.contains(&second.as_str())
-                    || kept_targets.iter().any(|(t, _)| {
-                        t.strip_suffix(".rs")
-                            .is_some_and(|stem| second.starts_with(&format!("{stem}__")))
-                    });
-            }
-            if is_target(&first) {
-                kept_target(&first)
-            } else {
-                !first.starts_with("instructor") && uses_module(&first)
-            }
+            file == Path::new(STUDENT_TESTS)
+                || GRADER_DATA.iter().any(|d| file.starts_with(data.join(d)))
         })
-        .collect())
+        .collect()
 }
 
 /// The handout's Cargo.toml: without the reference's crate (every line that names
 /// `solutions`: the workspace member, the dependency and the default feature; the feature
 /// itself stays, empty, so `cfg(feature = "solutions")` is still a known condition),
-/// without workspace members whose folder is left out (the reference library's), and
-/// without any bench or test target whose file is left out.
-fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
+/// without workspace members whose folder is left out (the reference library's), without
+/// any bench or test target whose file is left out, and without the dev-dependencies no
+/// kept test names (`tests` is the text of the kept tests): the instructor's tests link the
+/// student's crate, and the student's tests must not, or one exercise that does not compile
+/// would stop them all. Its default member is the root package alone, so `cargo test` runs
+/// the student's tests and not the framework's.
+fn rewrite_cargo_toml(text: &str, kept: &[PathBuf], tests: &str) -> anyhow::Result<String> {
     let mut out = String::new();
     let mut section_header = String::new();
     let mut section = String::new();
+    // Comment lines waiting for the dev-dependency they describe.
+    let mut comments = String::new();
     let flush = |header: &str, body: &str, out: &mut String| {
         let is_target = header.starts_with("[[bench]]") || header.starts_with("[[test]]");
         if is_target {
@@ -200,6 +152,17 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf]) -> anyhow::Result<String> {
             section.clear();
         } else if section_header.trim() == "[features]" && line.starts_with("solutions") {
             section.push_str(EMPTY_SOLUTIONS_FEATURE);
+        } else if section_header.trim() == "[workspace]" && line.starts_with("default-members") {
+            section.push_str(HANDOUT_DEFAULT_MEMBERS);
+        } else if section_header.trim() == "[dev-dependencies]" && line.starts_with('#') {
+            comments.push_str(line);
+        } else if section_header.trim() == "[dev-dependencies]" && line.contains('=') {
+            let name = line.split('=').next().unwrap_or_default().trim();
+            if tests.contains(&format!("{}::", name.replace('-', "_"))) {
+                section.push_str(&comments);
+                section.push_str(line);
+            }
+            comments.clear();
         } else if !line.contains("solutions") && !names_missing_member(&section_header, line, kept)
         {
             section.push_str(line);
@@ -229,6 +192,9 @@ fn names_missing_member(section_header: &str, line: &str, kept: &[PathBuf]) -> b
     section_header.trim() == "[workspace]" && !kept.iter().any(|f| f.starts_with(dir))
 }
 
+/// The handout's default members: the root package, whose tests are the student's.
+const HANDOUT_DEFAULT_MEMBERS: &str = "default-members = [\".\"]\n";
+
 /// The handout's `solutions` feature: declared, and empty.
 const EMPTY_SOLUTIONS_FEATURE: &str = "solutions = []\n";
 
@@ -255,12 +221,21 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
     if bench_needs_solutions {
         rest.retain(|f| !f.starts_with("benches"));
     }
-    rest.extend(select_tests(root, tests)?);
+    rest.extend(select_tests(tests));
     rest.sort();
     let cargo_path = root.join("Cargo.toml");
     let cargo = std::fs::read_to_string(&cargo_path)
         .with_context(|| format!("reading {}", cargo_path.display()))?;
-    let cargo_toml = rewrite_cargo_toml(&cargo, &rest).context("Cargo.toml")?;
+    let mut tests = String::new();
+    for file in rest
+        .iter()
+        .filter(|f| f.starts_with("tests") && f.extension().is_some_and(|e| e == "rs"))
+    {
+        let path = root.join(file);
+        tests += &std::fs::read_to_string(&path)
+            .with_context(|| format!("reading {}", path.display()))?;
+    }
+    let cargo_toml = rewrite_cargo_toml(&cargo, &rest, &tests).context("Cargo.toml")?;
     Ok(Manifest {
         files: rest,
         cargo_toml,
@@ -278,7 +253,7 @@ mod tests {
             PathBuf::from("benches/render.rs"),
             PathBuf::from("src/lib.rs"),
         ];
-        let out = rewrite_cargo_toml(text, &kept).unwrap();
+        let out = rewrite_cargo_toml(text, &kept, "").unwrap();
         assert!(
             !out.replace("solutions = []\n", "").contains("solutions"),
             "{out}"
@@ -287,6 +262,20 @@ mod tests {
         assert!(out.contains("members = [\n    \"src\",\n]"), "{out}");
         assert!(!out.contains("\"tasks\""), "{out}");
         assert!(out.contains("name = \"render\""), "{out}");
+    }
+
+    #[test]
+    fn cargo_toml_keeps_the_dev_dependencies_the_student_tests_name_and_one_default_member() {
+        let text = "[workspace]\nmembers = [\n    \"src\",\n]\ndefault-members = [\".\", \"src\"]\n\n[dev-dependencies]\n# The student's crate, linked in-process.\npbrlab-exercises = { path = \"exercises\" }\nserde_json = \"1\"\n# A harness.\nlibtest-mimic = \"0.8\"\n";
+        let tests = "use libtest_mimic::Trial;\nfn f() { serde_json::from_str(\"1\"); }\n";
+        let out = rewrite_cargo_toml(text, &[PathBuf::from("src/lib.rs")], tests).unwrap();
+        assert!(out.contains("default-members = [\".\"]\n"), "{out}");
+        assert!(!out.contains("exercises"), "{out}");
+        assert!(!out.contains("in-process"), "{out}");
+        assert!(
+            out.contains("serde_json = \"1\"\n# A harness.\nlibtest-mimic"),
+            "{out}"
+        );
     }
 
     #[test]

@@ -172,11 +172,20 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
             assert!(!needs_solutions(&text), "{name} uses the reference");
         }
     }
-    // The renderer's tests, which need no reference, are in, with every module.
-    for module in ["main", "bad_input", "needs", "scene_fuzz", "watertight"] {
-        let file = format!("tests/renderer/{module}.rs");
-        assert!(names.contains(&file), "{file}");
-    }
+    // Of the tests, the student's alone: the framework's stay here.
+    let tests: Vec<&String> = names
+        .iter()
+        .filter(|n| n.starts_with("tests/") && n.ends_with(".rs"))
+        .collect();
+    assert_eq!(
+        tests,
+        [pbrlab::handout::manifest::STUDENT_TESTS],
+        "{tests:?}"
+    );
+    assert!(
+        !manifest.cargo_toml.contains("pbrlab-exercises ="),
+        "the student's tests link no student code"
+    );
     // The stubs and the grader's public data are in; the data has no hidden cases.
     for task in pbrlab::worksheet::TaskId::ALL {
         if pbrlab::worksheet::task_functions(task).is_empty() {
@@ -356,15 +365,35 @@ fn the_handout_is_a_git_repository_that_can_put_a_stub_back() {
 fn the_handout_builds_tests_and_grades_without_solutions() {
     let tmp = tempfile::tempdir().unwrap();
     let dir: PathBuf = tmp.path().join("student");
-    pbrlab::handout::write(root(), &dir).expect("handout written");
+    // GitHub Classroom's template repository: the handout and one workflow.
+    let files = pbrlab::autograder::github_classroom::write(root(), &dir).expect("handout written");
+    assert!(files.contains(&PathBuf::from(
+        pbrlab::autograder::github_classroom::WORKFLOW
+    )));
     let library =
         pbrlab::handout::compiled_reference::build(root(), &dir).expect("reference compiled");
     pbrlab::handout::stubs::commit(&dir).expect("the handout committed");
+    // `cargo test` grades the student's tasks, one test each: on the stubs, every one is
+    // ignored as not attempted, and nothing else runs.
     let test = cargo(&dir, &["test", "--release"]);
+    let stdout = String::from_utf8_lossy(&test.stdout);
     assert!(
         test.status.success(),
-        "{}",
+        "{stdout}{}",
         String::from_utf8_lossy(&test.stderr)
+    );
+    let graded = graded_tasks();
+    for task in &graded {
+        assert_eq!(
+            test_line(&stdout, task),
+            Some(("[not attempted]".into(), "ignored".into())),
+            "{stdout}"
+        );
+    }
+    assert_eq!(stdout.matches("running ").count(), 1, "{stdout}");
+    assert!(
+        stdout.contains(&format!("0 passed; 0 failed; {} ignored", graded.len())),
+        "{stdout}"
     );
     let report = grade_through_cargo_run(&dir, &[]);
     assert_eq!(report.score, 0.0);
@@ -424,13 +453,181 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         .unwrap();
     }
     let test = cargo_outside_ci(&dir, &["test", "--release"]);
+    let stdout = String::from_utf8_lossy(&test.stdout);
     assert!(
         test.status.success(),
-        "with four exercises written: {}",
+        "with four exercises written: {stdout}{}",
         String::from_utf8_lossy(&test.stderr)
+    );
+    for task in ["reflect", "smith_g1", "fresnel_schlick", "cosine_sample"] {
+        assert_eq!(
+            test_line(&stdout, task),
+            Some((String::new(), "ok".into())),
+            "{stdout}"
+        );
+    }
+    // A wrong task fails its test, with the grader's report; a filter grades one task.
+    let right = std::fs::read_to_string(dir.join("exercises/smith_g1.rs")).unwrap();
+    let wrong = right.replace("2.0 * c / (c + root)", "2.0 * c / (c + root + 0.01)");
+    assert_ne!(wrong, right);
+    std::fs::write(dir.join("exercises/smith_g1.rs"), wrong).unwrap();
+    let test = cargo_outside_ci(&dir, &["test", "--release", "smith_g1"]);
+    std::fs::write(dir.join("exercises/smith_g1.rs"), right).unwrap();
+    let stdout = String::from_utf8_lossy(&test.stdout);
+    assert!(!test.status.success(), "{stdout}");
+    assert_eq!(
+        test_line(&stdout, "smith_g1"),
+        Some((String::new(), "FAILED".into())),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("smith_g1: FAILED"),
+        "the grader's report: {stdout}"
+    );
+    let filtered = format!(
+        "0 passed; 1 failed; 0 ignored; 0 measured; {} filtered out",
+        graded.len() - 1
+    );
+    assert!(stdout.contains(&filtered), "{filtered} in {stdout}");
+    the_classroom_workflow_reports_each_task_to_the_grading_reporter(
+        &dir,
+        &["reflect", "smith_g1", "fresnel_schlick", "cosine_sample"],
     );
     mixed_renders_take_the_compiled_reference_that_fits_the_build(&dir, &library);
     grade_sees_nothing_outside_the_handout(&dir);
+}
+
+/// The steps of a GitHub Actions workflow, as far as this test reads them.
+#[derive(serde::Deserialize)]
+struct Workflow {
+    jobs: std::collections::BTreeMap<String, Job>,
+}
+
+#[derive(serde::Deserialize)]
+struct Job {
+    steps: Vec<Step>,
+}
+
+#[derive(serde::Deserialize)]
+struct Step {
+    id: Option<String>,
+    uses: Option<String>,
+    run: Option<String>,
+    #[serde(default)]
+    env: std::collections::BTreeMap<String, String>,
+    #[serde(default)]
+    with: std::collections::BTreeMap<String, String>,
+}
+
+/// The GitHub Classroom workflow of the template repository at `dir`, run as GitHub runs
+/// it: its grading step's script in bash with `$GITHUB_OUTPUT`, then what the grading
+/// reporter reads, for each runner it lists, from the environment its step sets: base64
+/// JSON with the reporter's fields. The `passing` tasks score their points; the stubs 0.
+fn the_classroom_workflow_reports_each_task_to_the_grading_reporter(dir: &Path, passing: &[&str]) {
+    use base64::Engine;
+    use pbrlab::autograder::github_classroom::{GRADE_STEP, WORKFLOW};
+    let text = std::fs::read_to_string(dir.join(WORKFLOW)).unwrap();
+    let workflow: Workflow = serde_saphyr::from_str(&text).expect("the workflow is YAML");
+    let steps = &workflow.jobs.values().next().expect("a job").steps;
+    let grade = steps
+        .iter()
+        .find(|s| s.id.as_deref() == Some(GRADE_STEP))
+        .expect("the grading step");
+    let reporter = steps
+        .iter()
+        .find(|s| {
+            s.uses
+                .as_deref()
+                .is_some_and(|u| u.starts_with("classroom-resources/autograding-grading-reporter@"))
+        })
+        .expect("the grading reporter");
+    let outputs_file = dir.join(".github-output");
+    let run = Command::new("bash")
+        .args(["-e", "-c", grade.run.as_deref().expect("a script")])
+        .current_dir(dir)
+        .env("GITHUB_OUTPUT", &outputs_file)
+        .env("PBRLAB_STATE_DIR", dir.join(".state"))
+        .env_remove("CARGO_TARGET_DIR")
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let outputs = std::fs::read_to_string(&outputs_file).unwrap();
+    let output = |name: &str| {
+        outputs
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("{name}=")))
+            .map(str::to_string)
+    };
+    let runners: Vec<&str> = reporter.with["runners"].split(',').map(str::trim).collect();
+    assert_eq!(
+        runners.len(),
+        graded_tasks().len() + pbrlab::grade::renders::RENDER_CHECKS.len()
+    );
+    for runner in runners {
+        // The reporter reads `<RUNNER>_RESULTS`; the workflow sets it from the step output.
+        let variable = format!("{}_RESULTS", runner.to_uppercase());
+        assert_eq!(
+            reporter.env.get(&variable).map(String::as_str),
+            Some(format!("${{{{ steps.{GRADE_STEP}.outputs.{runner} }}}}").as_str()),
+            "{variable}"
+        );
+        let encoded = output(runner).unwrap_or_else(|| panic!("no output {runner}: {outputs}"));
+        let json = base64::engine::general_purpose::STANDARD
+            .decode(encoded)
+            .expect("base64");
+        let result: serde_json::Value = serde_json::from_slice(&json).expect("JSON");
+        assert_eq!(result["version"], 1, "{result}");
+        let max = result["max_score"].as_f64().expect("max_score");
+        assert!(max > 0.0, "{result}");
+        let tests = result["tests"].as_array().expect("tests");
+        assert!(!tests.is_empty(), "{result}");
+        let mut score = 0.0;
+        for test in tests {
+            assert!(
+                test["name"].is_string() && test["message"].is_string(),
+                "{test}"
+            );
+            assert!(
+                ["pass", "fail", "error"].contains(&test["status"].as_str().unwrap()),
+                "{test}"
+            );
+            score += test["score"].as_f64().expect("score");
+        }
+        if passing.contains(&runner) {
+            assert_eq!(result["status"], "pass", "{result}");
+            assert!((score - max).abs() < 1e-9, "{result}");
+        } else {
+            assert_eq!(result["status"], "fail", "{result}");
+            assert_eq!(score, 0.0, "{result}");
+        }
+    }
+}
+
+/// The kind (`[not attempted]`, or empty) and the outcome (`ok`, `FAILED`, `ignored`) of the
+/// test `name` in libtest's output `stdout`.
+fn test_line(stdout: &str, name: &str) -> Option<(String, String)> {
+    stdout.lines().find_map(|line| {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.as_slice() {
+            ["test", kind @ .., task, "...", outcome] if *task == name => {
+                Some((kind.join(" "), outcome.to_string()))
+            }
+            _ => None,
+        }
+    })
+}
+
+/// The tasks the student writes, each a test of the handout's `cargo test`.
+fn graded_tasks() -> Vec<&'static str> {
+    pbrlab::worksheet::TaskId::ALL
+        .into_iter()
+        .filter(|t| !pbrlab::worksheet::task_functions(*t).is_empty())
+        .map(|t| t.name())
+        .collect()
 }
 
 /// `grade` in the handout, with the exercise check off: an exercise file that assembles an

@@ -1,6 +1,7 @@
-//! The renderer's tests that need no reference solutions, so the student handout keeps
-//! them: bad scene input, what a scene needs, watertight meshes, and the scene-loader fuzz.
-//! One test binary with a module per subject.
+//! The renderer's tests that need no reference solutions: bad scene input, what a scene
+//! needs, watertight meshes, and the scene-loader fuzz. One test binary with a module per
+//! subject. The framework's own, so not in the student handout (which has only the
+//! student's tests, `tests/exercises.rs`).
 
 mod bad_input;
 mod needs;

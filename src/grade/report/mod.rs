@@ -1,6 +1,7 @@
 //! Reports of a grading run: a terminal table, JSON, Gradescope's and PrairieLearn's
 //! results.json, JUnit XML and an HTML page.
 
+pub mod github_classroom;
 pub mod gradescope;
 mod html;
 pub mod images;
@@ -29,6 +30,10 @@ pub enum Format {
     Prairielearn,
     /// JUnit XML (GitLab CI, Jenkins, CodeGrade): a suite per task, a case per check.
     Junit,
+    /// GitHub Classroom: a `TASK=BASE64` line per task, each the grading reporter's result
+    /// of one runner (for `$GITHUB_OUTPUT`; `autograder github-classroom` writes the
+    /// workflow).
+    GithubClassroom,
 }
 
 /// `report` in `format` (`detail` is how much the text table shows).
@@ -45,5 +50,6 @@ pub fn render(
             serde_json::to_string_pretty(&prairielearn::prairielearn(report, ""))?
         }
         Format::Junit => junit::junit([(None, Ok(report))]),
+        Format::GithubClassroom => github_classroom::github_classroom(report),
     })
 }
