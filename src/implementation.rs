@@ -103,20 +103,25 @@ pub fn mixed(student_tasks: TaskSet) -> TaskFns {
         .fold(*reference(), |table, task| table.with_task(student, task))
 }
 
-/// Which implementation to run, as chosen on the command line. A build without the
-/// reference (the handout) does not list the choices that need it in `--help`.
+/// Which implementation to run, as chosen on the command line. The commands that render
+/// (`render`, `converge`) take every choice everywhere: a handout renders with its compiled
+/// reference. The commands that grade take only `student` in a build without the
+/// reference (the handout), and hide their `--impl` there ([`GRADES_ONLY_STUDENT`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum ImplChoice {
     /// Every task from `exercises/` (a grade takes each task's own code, with the reference,
     /// where the build has it, behind the tasks it builds on).
     Student,
-    /// Every task from `solutions/`.
-    #[value(hide = !cfg!(feature = "solutions"))]
+    /// Every task from the reference (`solutions/`, or the handout's compiled reference).
     Reference,
     /// The student's code for the tasks that are implemented, the reference for the rest.
-    #[value(hide = !cfg!(feature = "solutions"))]
     Mixed,
 }
+
+/// True in a build without the reference's source (the handout): grading takes the
+/// student's code only, and the options that need the reference (another `--impl`, hidden
+/// cases, per-student variants) are left out of `--help`, since they would only fail.
+pub const GRADES_ONLY_STUDENT: bool = !cfg!(feature = "solutions");
 
 /// The message of the panic that `todo!()` raises.
 pub const TODO_MESSAGE: &str = "not yet implemented";

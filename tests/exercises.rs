@@ -141,7 +141,7 @@ fn fails(status: &TaskStatus) -> bool {
     !matches!(status, TaskStatus::Passed | TaskStatus::NoChecks) && !waits(status)
 }
 
-/// True for a task not written yet, or waiting for one that is not.
+/// True for a task not attempted yet, or waiting for one that is not.
 fn waits(status: &TaskStatus) -> bool {
     matches!(
         status,
@@ -167,7 +167,7 @@ fn summary(report: &GradeReport) -> String {
         "`cargo run --release -- grade` adds the render checks".to_string()
     };
     format!(
-        "pbrlab: {} of {} tasks pass, {} fail, {} not written yet; {next}",
+        "pbrlab: {} of {} tasks pass, {} fail, {} not attempted; {next}",
         count(|s| *s == TaskStatus::Passed),
         tasks.len(),
         count(fails),

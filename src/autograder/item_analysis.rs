@@ -47,6 +47,9 @@ fn failing_input(check: &CheckResult, shown: &str) -> Option<String> {
     if !matches!(check.kind, CheckKind::Values | CheckKind::Stability) {
         return None;
     }
+    let shown = shown
+        .strip_prefix(crate::grade::values::SIMPLEST)
+        .unwrap_or(shown);
     let (input, rest) = shown.split_once(": got ")?;
     // The case's name, where the line ends with one, makes the input unique.
     let case = rest

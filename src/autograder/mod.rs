@@ -17,6 +17,7 @@ pub mod run;
 pub mod schema;
 pub mod student_result;
 pub mod submission;
+pub mod try_package;
 
 use crate::worksheet::TaskId;
 use std::path::Path;

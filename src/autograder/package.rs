@@ -83,6 +83,8 @@ pub fn write(
                     false,
                 ),
                 ("entrypoint.sh", ENTRYPOINT.to_string(), true),
+                // A `--try` builds in pbrlab/target: never part of the image's context.
+                (".dockerignore", "pbrlab/target\n".to_string(), false),
                 ("question/info.json", INFO.replace("@UUID@", &uuid()), false),
                 (
                     "question/question.html",

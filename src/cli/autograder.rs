@@ -5,8 +5,9 @@ use crate::autograder::config::Config;
 use crate::autograder::package;
 use crate::autograder::run::Submission;
 use crate::autograder::schema::Service;
+use crate::autograder::try_package::{Platform, try_package};
 use anyhow::Context;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `pbrlab autograder`.
 #[derive(clap::Args, Debug)]
@@ -25,7 +26,7 @@ pub enum Step {
     Prairielearn(PackageArgs),
     /// Write a GitHub Classroom template repository: the student handout and a workflow
     /// that grades the public cases on every push and reports each task's points.
-    GithubClassroom(super::handout::Args),
+    GithubClassroom(ClassroomArgs),
     /// Grade one submission inside a package (what its scripts call).
     #[command(hide = true)]
     Run(RunArgs),
@@ -55,6 +56,45 @@ pub struct PackageArgs {
     /// A file holding the course secret of --variant-key.
     #[arg(long, conflicts_with_all = ["hidden_seed", "hidden_seed_file"])]
     pub variant_key_file: Option<PathBuf>,
+    /// Run the package on this submission (a folder of exercise files, or a zip) as the
+    /// platform would, in a scratch folder, and print what the platform would show. Writes
+    /// the package first when the folder is new or empty; builds it once, as the platform
+    /// does.
+    #[arg(long = "try", value_name = "SUBMISSION")]
+    pub try_submission: Option<PathBuf>,
+}
+
+/// Arguments of `pbrlab autograder github-classroom`.
+#[derive(clap::Args, Debug)]
+pub struct ClassroomArgs {
+    /// The template repository, as `handout` writes it.
+    #[command(flatten)]
+    pub handout: super::handout::Args,
+    /// Run the workflow's grading step on this submission (a folder of exercise files, a
+    /// zip, or a student's repository) as GitHub would: in the template with the
+    /// submission's task files over its stubs, which are put back afterwards. Prints what
+    /// the grading reporter would read. Writes the template first when the folder is new or
+    /// empty.
+    #[arg(long = "try", value_name = "SUBMISSION")]
+    pub try_submission: Option<PathBuf>,
+}
+
+/// True when `dir` exists and holds anything (a package written before).
+fn written(dir: &Path) -> bool {
+    std::fs::read_dir(dir).is_ok_and(|mut d| d.next().is_some())
+}
+
+/// `--try`: the package in `dir` run on `submission` as `platform` runs it.
+fn try_it(platform: Platform, dir: &Path, submission: &Path) -> anyhow::Result<()> {
+    let view = try_package(platform, dir, submission).with_context(|| {
+        format!(
+            "trying the package in {} on {}",
+            dir.display(),
+            submission.display()
+        )
+    })?;
+    print!("{view}");
+    Ok(())
 }
 
 /// Arguments of `pbrlab autograder run`.
@@ -83,21 +123,29 @@ pub struct RunArgs {
 pub fn run(args: Args) -> anyhow::Result<()> {
     let root = crate::repository_root();
     match args.command {
-        Step::Gradescope(p) => write(root, p, Service::Gradescope),
-        Step::Prairielearn(p) => write(root, p, Service::Prairielearn),
-        Step::GithubClassroom(h) => {
-            let files = super::handout::write_student_repository(
-                &h.dir,
-                h.without_reference,
-                crate::autograder::github_classroom::write,
-            )?;
-            eprintln!(
-                "wrote {files} files into {}\nnext: push it to a new GitHub repository, mark \
-                 it a template, and choose it as the assignment's starter code in GitHub \
-                 Classroom (README: GitHub Classroom)",
-                h.dir.display()
-            );
-            Ok(())
+        Step::Gradescope(p) => package_step(root, p, Service::Gradescope, Platform::Gradescope),
+        Step::Prairielearn(p) => {
+            package_step(root, p, Service::Prairielearn, Platform::Prairielearn)
+        }
+        Step::GithubClassroom(c) => {
+            let h = &c.handout;
+            if c.try_submission.is_none() || !written(&h.dir) {
+                let files = super::handout::write_student_repository(
+                    &h.dir,
+                    h.without_reference,
+                    crate::autograder::github_classroom::write,
+                )?;
+                eprintln!(
+                    "wrote {files} files into {}\nnext: push it to a new GitHub repository, \
+                     mark it a template, and choose it as the assignment's starter code in \
+                     GitHub Classroom (README: GitHub Classroom)",
+                    h.dir.display()
+                );
+            }
+            match &c.try_submission {
+                Some(submission) => try_it(Platform::GithubClassroom, &h.dir, submission),
+                None => Ok(()),
+            }
         }
         Step::Run(r) => {
             let config = match Config::load(&r.config) {
@@ -126,7 +174,26 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
 }
 
-fn write(root: &std::path::Path, p: PackageArgs, service: Service) -> anyhow::Result<()> {
+/// A package writer's step: write the package (unless `--try` finds one written), then try
+/// it when asked.
+fn package_step(
+    root: &Path,
+    p: PackageArgs,
+    service: Service,
+    platform: Platform,
+) -> anyhow::Result<()> {
+    let submission = p.try_submission.clone();
+    let dir = p.out.clone();
+    if submission.is_none() || !written(&dir) {
+        write(root, p, service)?;
+    }
+    match submission {
+        Some(submission) => try_it(platform, &dir, &submission),
+        None => Ok(()),
+    }
+}
+
+fn write(root: &Path, p: PackageArgs, service: Service) -> anyhow::Result<()> {
     let hidden_seed =
         super::secret::seed("hidden-seed", p.hidden_seed, p.hidden_seed_file.as_deref())?;
     let config = Config {
@@ -143,8 +210,9 @@ fn write(root: &std::path::Path, p: PackageArgs, service: Service) -> anyhow::Re
     eprintln!("wrote {} files into {}", files.len(), p.out.display());
     match service {
         Service::Gradescope => eprintln!(
-            "next: (cd {} && zip -r ../autograder.zip .), then upload autograder.zip as the \
-             assignment's autograder (README: Grading a class)",
+            "next: try it with --try SUBMISSION, then (cd {} && zip -r ../autograder.zip . -x \
+             'pbrlab/target/*') and upload autograder.zip as the assignment's autograder \
+             (README: Grading a class)",
             p.out.display()
         ),
         Service::Prairielearn => eprintln!(

@@ -9,7 +9,7 @@ use crate::grade::runner::{DEFAULT_SEED, GradeOptions, grade};
 use crate::grade::student_build::BuildRecord;
 use crate::grade::variant::Variant;
 use crate::grade::verdict::TaskStatus;
-use crate::implementation::ImplChoice;
+use crate::implementation::{GRADES_ONLY_STUDENT, ImplChoice};
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow};
 use std::path::PathBuf;
@@ -22,7 +22,7 @@ pub struct Args {
     /// Tasks to grade (ids or unique prefixes). Default: every task.
     pub tasks: Vec<String>,
     /// Whose code to grade (one of the possible values below).
-    #[arg(long = "impl", value_enum, default_value = "student")]
+    #[arg(long = "impl", value_enum, default_value = "student", hide = GRADES_ONLY_STUDENT)]
     pub implementation: ImplChoice,
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
@@ -38,10 +38,10 @@ pub struct Args {
     pub seed: u64,
     /// Add random hidden cases drawn with this seed, compared live against the reference
     /// (readable by every local user while the run lasts: prefer --hidden-seed-file).
-    #[arg(long, conflicts_with = "hidden_seed_file")]
+    #[arg(long, conflicts_with = "hidden_seed_file", hide = GRADES_ONLY_STUDENT)]
     pub hidden_seed: Option<u64>,
     /// A file holding the hidden seed.
-    #[arg(long)]
+    #[arg(long, hide = GRADES_ONLY_STUDENT)]
     pub hidden_seed_file: Option<PathBuf>,
     /// Time limit per task, in seconds.
     #[arg(long, default_value_t = crate::grade::runner::DEFAULT_TASK_TIMEOUT_SECONDS)]
@@ -68,7 +68,7 @@ pub struct Args {
     #[arg(long)]
     pub no_renders: bool,
     /// Grade this many times with seeds seed, seed+1, … and report each task's failure rate
-    /// against its declared false-failure rate (for `--impl reference`).
+    /// against its declared false-failure rate (run on the reference, it calibrates the checks).
     #[arg(long)]
     pub repeat: Option<usize>,
     /// How much of a failing case the report shows: full (input, your output, the
@@ -79,14 +79,14 @@ pub struct Args {
     /// Grade one student's variant: their own hidden cases and seeds, drawn from this
     /// course secret and `--student` (as `grade-class --variant-key` does). Readable by
     /// every local user while the run lasts: prefer --variant-key-file.
-    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat"])]
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat"], hide = GRADES_ONLY_STUDENT)]
     pub variant_key: Option<String>,
     /// A file holding the course secret of --variant-key.
-    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat", "variant_key"])]
+    #[arg(long, requires = "student", conflicts_with_all = ["hidden_seed", "hidden_seed_file", "seed", "repeat", "variant_key"], hide = GRADES_ONLY_STUDENT)]
     pub variant_key_file: Option<PathBuf>,
     /// The student whose variant `--variant-key` grades (the submission's name in a
     /// class run).
-    #[arg(long, requires = "variant")]
+    #[arg(long, requires = "variant", hide = GRADES_ONLY_STUDENT)]
     pub student: Option<String>,
 }
 
@@ -161,7 +161,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             eprintln!("warning: could not remember this grade: {e:#}");
         }
     }
-    if args.format != Format::Text && args.implementation == ImplChoice::Student {
+    // In the instructor's repository only: a handout's stubs are the student's to write.
+    if cfg!(feature = "solutions")
+        && args.format != Format::Text
+        && args.implementation == ImplChoice::Student
+    {
         let tasks: Vec<_> = report.tasks.iter().filter(|t| t.max_points > 0.0).collect();
         let stubs = tasks
             .iter()

@@ -67,11 +67,19 @@ pub fn next_task() -> TaskId {
 /// [`run`] for `task`; `again` says how to ask for the next level (the command, or a key
 /// in `pbrlab watch`).
 pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
+    print!("{}", hints(task, args, again)?);
+    Ok(())
+}
+
+/// The text [`show`] prints, the levels it shows remembered as seen.
+pub fn hints(task: TaskId, args: &Args, again: &str) -> anyhow::Result<String> {
+    use std::fmt::Write;
+    let mut out = String::new();
     let info = task.info();
     let levels = info.hints.len();
     if levels == 0 {
-        println!("{} has no hints.", info.id);
-        return Ok(());
+        writeln!(out, "{} has no hints.", info.id)?;
+        return Ok(out);
     }
     let mut seen = load_seen();
     let before = seen.get(info.id).copied().unwrap_or(0).min(levels);
@@ -83,29 +91,31 @@ pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
             (next, next)
         }
     };
-    println!(
+    writeln!(
+        out,
         "{} — {} (worksheet {}, exercises/{}.rs)",
         info.id, info.title, info.section, info.id
-    );
+    )?;
     for (i, hint) in info.hints.iter().enumerate().take(last).skip(first - 1) {
-        println!("\nhint {}/{}: {}", i + 1, levels, hint);
+        writeln!(out, "\nhint {}/{}: {}", i + 1, levels, hint)?;
     }
     if first > 1 {
         let earlier = match first - 1 {
             1 => "level 1".to_string(),
             n => format!("levels 1–{n}"),
         };
-        println!(
+        writeln!(
+            out,
             "\n({earlier} shown before: `{} hint {} --level {}` shows them again)",
             super::invocation(),
             info.id,
             first - 1
-        );
+        )?;
     }
     if last < levels {
-        println!("\nStill stuck? {again} shows hint {}.", last + 1);
+        writeln!(out, "\nStill stuck? {again} shows hint {}.", last + 1)?;
     } else if args.level.is_none() && !args.all && before == levels {
-        println!("\nThat was the last hint of {}.", info.id);
+        writeln!(out, "\nThat was the last hint of {}.", info.id)?;
     }
     if last > before {
         seen.insert(info.id.to_string(), last);
@@ -113,5 +123,5 @@ pub fn show(task: TaskId, args: &Args, again: &str) -> anyhow::Result<()> {
         crate::atomic_file::write(&path, serde_json::to_string_pretty(&seen)?.as_bytes())
             .with_context(|| format!("remembering the hints shown in {}", path.display()))?;
     }
-    Ok(())
+    Ok(out)
 }

@@ -26,7 +26,7 @@ pub struct Args {
     /// Tasks to check (ids or unique prefixes); all tasks when none are given.
     pub tasks: Vec<String>,
     /// Whose code to run.
-    #[arg(long = "impl", value_enum, default_value = "student")]
+    #[arg(long = "impl", value_enum, default_value = "student", hide = crate::implementation::GRADES_ONLY_STUDENT)]
     pub implementation: ImplChoice,
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]

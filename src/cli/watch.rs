@@ -1,3 +1,6 @@
+use crate::grade::report::screen::screen;
+use crate::grade::report::{self, Detail, WIDTH};
+use crate::grade::verdict::GradeReport;
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::collections::BTreeMap;
@@ -38,20 +41,104 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, SystemTime> {
 }
 
 /// Regrades in a new process of this binary, whose first step rebuilds the worker with the
-/// student's crate (`rebuild::ensure_student_binaries`: cargo's progress and the compiler's messages shown as they
-/// come, a task that does not compile built from its stub); the grader's own table is the
-/// output, and watching goes on whatever happens.
-fn regrade(exe: &Path, tasks: &[String], verbose: bool) -> anyhow::Result<()> {
+/// student's crate (`rebuild::ensure_student_binaries`: cargo's progress and the compiler's
+/// messages shown as they come, a task that does not compile built from its stub). The
+/// report comes back as JSON in `report_file`; `None` when the grade did not run (its
+/// messages are on the screen), and watching goes on whatever happens.
+fn regrade(
+    exe: &Path,
+    tasks: &[String],
+    report_file: &Path,
+) -> anyhow::Result<Option<GradeReport>> {
     let status = Command::new(exe)
         .arg("grade")
         .args(tasks)
-        .args(verbose.then_some("--verbose"))
+        .args(["--format", "json", "--output"])
+        .arg(report_file)
         .status()
         .with_context(|| format!("running {}", exe.display()))?;
     if !status.success() {
         eprintln!("(not graded: fix the error above and save again)");
+        return Ok(None);
     }
+    let text = std::fs::read_to_string(report_file)
+        .with_context(|| format!("reading {}", report_file.display()))?;
+    Ok(Some(serde_json::from_str(&text).with_context(|| {
+        format!("reading the report in {}", report_file.display())
+    })?))
+}
+
+/// The rows of the smallest terminal the watch is drawn for (with [`WIDTH`] columns).
+pub const ROWS: usize = 24;
+
+/// The most rows a hint takes under the view (the rest is cut, and `hint` shows it all).
+const HINT_ROWS: usize = 12;
+
+/// What the watch shows under the grade: nothing, or the hint text of `h`.
+enum Below {
+    Nothing,
+    Hint(Vec<String>),
+}
+
+/// The keys line: at most [`WIDTH`] characters.
+fn keys_line(hint_for: TaskId) -> String {
+    report::fit(
+        &format!("h: next hint for {hint_for}   f: full report   r: regrade   q: quit"),
+        WIDTH,
+    )
+}
+
+/// Clears the terminal and draws one screen: the view of `report` (the full text with
+/// `verbose`), what goes `below` it, and the keys.
+fn draw(
+    report: Option<&GradeReport>,
+    previous: Option<&GradeReport>,
+    below: &Below,
+    hint_for: TaskId,
+    verbose: bool,
+) -> anyhow::Result<()> {
+    let below: &[String] = match below {
+        Below::Nothing => &[],
+        Below::Hint(lines) => lines,
+    };
+    let mut out = String::from("\x1b[2J\x1b[H");
+    match report {
+        Some(r) if verbose => out += &report::text(r, Detail::Verbose),
+        Some(r) => {
+            for line in screen(r, previous, ROWS - 1 - below.len()) {
+                out += &line;
+                out.push('\n');
+            }
+        }
+        None => out += "not graded: fix the error and save again\n",
+    }
+    for line in below {
+        out += line;
+        out.push('\n');
+    }
+    out += &keys_line(hint_for);
+    out.push('\n');
+    print!("{out}");
+    std::io::Write::flush(&mut std::io::stdout())?;
     Ok(())
+}
+
+/// The next hint of `task` as lines of at most [`WIDTH`] characters, a blank line first,
+/// cut to [`HINT_ROWS`].
+fn hint_lines(task: TaskId) -> anyhow::Result<Vec<String>> {
+    let args = super::hint::Args {
+        task: Some(task.name().into()),
+        level: None,
+        all: false,
+    };
+    let text = super::hint::hints(task, &args, "`h` again")?;
+    let mut lines = vec![String::new()];
+    lines.extend(text.lines().flat_map(report::wrap));
+    if lines.len() > HINT_ROWS {
+        lines.truncate(HINT_ROWS - 1);
+        lines.push(format!("… (`hint {task}` shows all of it)"));
+    }
+    Ok(lines)
 }
 
 /// The task whose hint `h` shows: the task of the file saved last, else the first task
@@ -79,16 +166,9 @@ fn saved_task(
         .map(|(task, _)| task)
 }
 
-/// Prints what the keys do.
-fn prompt(exercises: &Path, hint_for: TaskId) {
-    println!(
-        "\nWatching {} — save a file to regrade.\n  h: next hint for {hint_for}   r: regrade   q: quit",
-        exercises.display()
-    );
-}
-
-/// Regrades every time a file in `exercises/` is saved; h shows the next hint, r regrades,
-/// q (or Ctrl-C) stops.
+/// Regrades every time a file in `exercises/` is saved, and redraws one screen (the view
+/// of [`screen`], which fits [`WIDTH`]×[`ROWS`] in every state); h shows the next hint
+/// under it, f the full report, r regrades, q (or Ctrl-C) stops.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let root = crate::repository_root();
     let exercises = root.join("exercises");
@@ -98,12 +178,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     // Taken once: after a rebuild replaces the file, this process's own path names the
     // deleted one.
     let exe = std::env::current_exe().context("locating this binary")?;
+    let scratch = tempfile::Builder::new()
+        .prefix("pbrlab-watch-")
+        .tempdir()
+        .context("making a scratch folder")?;
+    let report_file = scratch.path().join("report.json");
     let poll = Duration::from_millis(args.poll_ms.max(50));
     let keys = super::keys::Keys::start();
     let mut seen = snapshot(&exercises);
     let mut saved = None;
-    regrade(&exe, &args.tasks, args.verbose)?;
-    prompt(&exercises, hint_task(saved, &args.tasks));
+    let mut report = regrade(&exe, &args.tasks, &report_file)?;
+    let mut previous: Option<GradeReport> = None;
+    draw(
+        report.as_ref(),
+        None,
+        &Below::Nothing,
+        hint_task(saved, &args.tasks),
+        args.verbose,
+    )?;
     loop {
         let key = keys.next(poll);
         let now = snapshot(&exercises);
@@ -111,14 +203,21 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             Some('q') => return Ok(()),
             Some('h') => {
                 let task = hint_task(saved, &args.tasks);
-                println!();
-                let args = super::hint::Args {
-                    task: Some(task.name().into()),
-                    level: None,
-                    all: false,
-                };
-                super::hint::show(task, &args, "`h` again")?;
-                prompt(&exercises, task);
+                let below = Below::Hint(hint_lines(task)?);
+                draw(
+                    report.as_ref(),
+                    previous.as_ref(),
+                    &below,
+                    task,
+                    args.verbose,
+                )?;
+                false
+            }
+            Some('f') => {
+                if let Some(r) = &report {
+                    print!("\n{}", report::text(r, Detail::Verbose));
+                }
+                println!("{}", keys_line(hint_task(saved, &args.tasks)));
                 false
             }
             Some('r') => true,
@@ -134,13 +233,26 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let settled = snapshot(&exercises);
         saved = saved_task(&seen, &settled).or(saved);
         seen = settled;
-        // Clear the screen now: unflushed, the escape went out after the new table and
-        // erased it.
+        // Cargo's progress and the compiler's messages scroll below this line until the
+        // grade is in; then the screen is redrawn.
         print!("\x1b[2J\x1b[H");
         println!("{}: rebuilding and regrading…", exercises.display());
         std::io::Write::flush(&mut std::io::stdout())?;
-        regrade(&exe, &args.tasks, args.verbose)?;
-        prompt(&exercises, hint_task(saved, &args.tasks));
+        let graded = regrade(&exe, &args.tasks, &report_file)?;
+        if graded.is_some() {
+            previous = report.take();
+            report = graded;
+            draw(
+                report.as_ref(),
+                previous.as_ref(),
+                &Below::Nothing,
+                hint_task(saved, &args.tasks),
+                args.verbose,
+            )?;
+        } else {
+            // The grade did not run: its messages stay on the screen.
+            println!("{}", keys_line(hint_task(saved, &args.tasks)));
+        }
     }
 }
 

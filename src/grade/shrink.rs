@@ -1,6 +1,6 @@
 //! Shrinking a failing value case: from the simplest graded input that fails, simpler
 //! inputs of the same contract are tried on the student's code, round by round, and the
-//! simplest that still fails is what the report names (`shrunk to: smith_g1(w=(1, 0, 0),
+//! simplest that still fails is what the report names (`shrunk to smith_g1(w=(1, 0, 0),
 //! alpha=0.5)`), as property-based testing tools do with a failing example.
 //!
 //! A step changes one input: a number to one with fewer significant digits (0, ±1, the
@@ -292,8 +292,8 @@ pub fn shrink(
 }
 
 /// Shrinks the simplest failing case of a values check (`check`, judged from `outputs` of
-/// `cases`) with [`shrink`] within `budget`, and names what it found in the check's summary
-/// and [`CheckResult::shrunk`]: `shrunk to: CALL: got …, expected …`. Nothing changes when
+/// `cases`) with [`shrink`] within `budget`, and names what it found in
+/// [`CheckResult::shrunk`]: `shrunk to CALL: got …, expected … (where it lies)`. Nothing changes when
 /// no case failed by value (a panic is simple already) or nothing simpler fails. The
 /// points and the counts of graded cases stay as graded.
 pub fn attach(
@@ -315,14 +315,16 @@ pub fn attach(
         return;
     };
     let Shrunk { case, got, problem } = shrunk;
-    check.summary += &format!("; shrunk to: {}: {problem}", case.call);
-    if let Some(position) = super::value_cases::position(&case.call) {
-        check.summary += &format!(" ({position})");
-    }
+    let position = super::value_cases::position(&case.call)
+        .map(|p| format!(" ({p})"))
+        .unwrap_or_default();
     check.shrunk = Some((
-        format!("shrunk to {}: {problem} [{}]", case.call, case.name),
         format!(
-            "shrunk to {}: got {} [{}]",
+            "shrunk to {}: {problem}{position} [{}]",
+            case.call, case.name
+        ),
+        format!(
+            "shrunk to {}: got {}{position} [{}]",
             case.call,
             got_of(&got),
             case.name

@@ -15,6 +15,9 @@ use super::wire::{Evaluated, ValueOutputs};
 use crate::panics::Panic;
 use crate::worksheet::Tasks;
 
+/// The label of the simplest failing case, the first of a values check's list.
+pub const SIMPLEST: &str = "simplest failing input: ";
+
 /// Calls `t` on every case and judges each output, in this process.
 pub fn run(name: &str, cases: &[ValueCase], visibility: Visibility, t: &impl Tasks) -> CheckResult {
     let calls: Vec<Call> = cases.iter().map(|c| c.call.clone()).collect();
@@ -55,10 +58,21 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
                 (Error::UNBOUNDED, None)
             }
         };
-        if worst.as_ref().is_none_or(|w| error.abs > w.error.abs) {
+        // The worst case by its share of the tolerance where one decides, else by the
+        // absolute error.
+        let share = match case.rule {
+            Rule::Close(tol) => Some(error.abs / (tol.abs + tol.rel * case.expected.magnitude())),
+            _ => None,
+        };
+        let key = |share: Option<f64>, error: &Error| share.unwrap_or(error.abs);
+        if worst
+            .as_ref()
+            .is_none_or(|w| key(share, &error) > key(w.share, &w.error))
+        {
             worst = Some(Worst {
                 case: format!("{} [{}]", case.call, case.name),
                 error,
+                share,
             });
         }
         if let Some(problem) = failure {
@@ -69,16 +83,30 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     result.regions = regions(cases, &failed_at);
     // The simplest failing input first: a worksheet case, then the shortest inputs (exact
     // boundary and special values print short), which is where a student starts debugging.
+    // The summary says how many and where; each failing case is printed once, in this list,
+    // the simplest labelled as such with where it lies in the domain.
     failing.sort_by_key(|(key, ..)| *key);
-    for (_, case, problem, got) in &failing {
+    for (i, (_, case, problem, got)) in failing.iter().enumerate() {
         let note = case
             .note
             .as_deref()
             .map(|n| format!(" ({n})"))
             .unwrap_or_default();
+        let (label, position) = match (i, visibility) {
+            (0, Visibility::Visible) => (
+                SIMPLEST,
+                super::value_cases::position(&case.call)
+                    .map(|p| format!(" ({p})"))
+                    .unwrap_or_default(),
+            ),
+            _ => ("", String::new()),
+        };
         result.fail(
-            format!("{}: {problem}{note} [{}]", case.call, case.name),
-            format!("{}: got {got} [{}]", case.call, case.name),
+            format!(
+                "{label}{}: {problem}{note}{position} [{}]",
+                case.call, case.name
+            ),
+            format!("{label}{}: got {got}{position} [{}]", case.call, case.name),
         );
     }
     result.finish();
@@ -107,12 +135,6 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             "; every failing value is {} × the expected one — a constant factor is missing or extra",
             fmt_num(factor)
         );
-    }
-    if let (Some((_, case, problem, _)), Visibility::Visible) = (failing.first(), visibility) {
-        result.summary += &format!("; simplest failing input: {}: {problem}", case.call);
-        if let Some(position) = super::value_cases::position(&case.call) {
-            result.summary += &format!(" ({position})");
-        }
     }
     result.seconds = outputs.seconds;
     result

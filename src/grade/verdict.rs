@@ -220,6 +220,11 @@ pub struct Worst {
     pub case: String,
     /// The error there.
     pub error: Error,
+    /// The error as a share of the case's tolerance (`abs + rel·|expected|`), where a
+    /// tolerance decides the case: at most 1 where it passed. What a report shows, since a
+    /// relative error alone is large wherever the expected value is near 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub share: Option<f64>,
 }
 
 /// Extra data of a check, drawn by the HTML report.

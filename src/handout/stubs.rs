@@ -1,7 +1,9 @@
-//! The shipped stubs of the exercises, kept in git so that a student can go back to one
-//! (`pbrlab reset TASK`): the handout is a git repository whose first commit, tagged
-//! [`TAG`], is the handout as written; in the instructor repository, which has no such tag,
-//! the committed exercises are the stubs.
+//! The shipped stubs of the exercises, so that a student can go back to one
+//! (`pbrlab reset TASK`) and the grader can build a stub in place of a file that does not
+//! compile. The handout carries a copy of each in [`SHIPPED`] (a repository made from it on
+//! GitHub Classroom has neither the handout's history nor its tags), and is a git
+//! repository whose first commit, tagged [`TAG`], is the handout as written; in the
+//! instructor repository, which has neither, the committed exercises are the stubs.
 
 use crate::task_set::TaskSet;
 use crate::worksheet::TaskId;
@@ -11,6 +13,9 @@ use std::process::{Command, Output};
 
 /// The tag of the handout's first commit.
 pub const TAG: &str = "pbrlab-stubs";
+
+/// The handout's folder of shipped stubs, one `<task>.rs` each, as written.
+pub const SHIPPED: &str = ".pbrlab-stubs";
 
 /// Runs git in `dir` with `args` and a fixed identity (a student's machine may have none).
 fn git(dir: &Path, args: &[&str]) -> anyhow::Result<Output> {
@@ -47,9 +52,14 @@ pub fn commit(dest: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The shipped stub of `task` in the repository at `root`: `exercises/<task>.rs` as
-/// committed at [`TAG`], or at `HEAD` where there is no tag.
+/// The shipped stub of `task` in the repository at `root`: its copy in [`SHIPPED`], else
+/// `exercises/<task>.rs` as committed at [`TAG`], or at `HEAD` where there is no tag.
 pub fn shipped(root: &Path, task: TaskId) -> anyhow::Result<String> {
+    let copy = root.join(SHIPPED).join(format!("{}.rs", task.name()));
+    if copy.is_file() {
+        return std::fs::read_to_string(&copy)
+            .with_context(|| format!("reading the shipped stub {}", copy.display()));
+    }
     let tagged = git(
         root,
         &[

@@ -463,4 +463,65 @@ fn both_packages_grade_real_submissions_end_to_end() {
             "{name}: PrairieLearn {score} against Gradescope {gs_score}/{gs_total}"
         );
     }
+    // `--try`: each built package run on a submission as its platform runs it, in a
+    // scratch folder, and the platform's view printed.
+    let try_package = |service: &str, package: &Path, submission: &str| {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_pbrlab"));
+        command
+            .args(["autograder", service])
+            .arg(package)
+            .arg("--try")
+            .arg(
+                dir.path()
+                    .join("autograder")
+                    .join(submission)
+                    .join("submission"),
+            );
+        let out = clean(command).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{service} --try: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let (score, total) = scores["correct"];
+    let view = try_package("gradescope", &gs, "correct");
+    assert!(
+        view.contains(&format!("Gradescope would show {score:.2} / {total:.2}")),
+        "{view}"
+    );
+    assert!(
+        view.contains("passed") && !view.contains("failed"),
+        "{view}"
+    );
+    let (score, total) = scores["non_compiling"];
+    let view = try_package("prairielearn", &pl, "non_compiling");
+    assert!(
+        view.contains(&format!(
+            "PrairieLearn would show {:.1} %",
+            100.0 * score / total
+        )),
+        "{view}"
+    );
+}
+
+/// `--try` on a submission that is not there says so, naming it, before building anything.
+#[test]
+fn trying_a_package_on_a_missing_submission_names_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+        .args(["autograder", "gradescope"])
+        .arg(dir.path().join("gs"))
+        .arg("--try")
+        .arg(dir.path().join("no-such-submission"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        stderr.contains("reading the submission") && stderr.contains("no-such-submission"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("building the package"), "{stderr}");
 }

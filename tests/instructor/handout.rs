@@ -395,6 +395,50 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
         stdout.contains(&format!("0 passed; 0 failed; {} ignored", graded.len())),
         "{stdout}"
     );
+    // `--try`: the workflow's grading step on a submission, in the template with its
+    // files over the stubs (put back afterwards), and what the grading reporter would read.
+    let submission = tmp.path().join("submission");
+    std::fs::create_dir_all(&submission).unwrap();
+    std::fs::copy(
+        root().join("solutions/reflect.rs"),
+        submission.join("reflect.rs"),
+    )
+    .unwrap();
+    let tried = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
+        .args(["autograder", "github-classroom"])
+        .arg(&dir)
+        .arg("--try")
+        .arg(&submission)
+        .env_remove("CARGO_TARGET_DIR")
+        .output()
+        .unwrap();
+    let view = String::from_utf8_lossy(&tried.stdout);
+    assert!(
+        tried.status.success(),
+        "{view}{}",
+        String::from_utf8_lossy(&tried.stderr)
+    );
+    assert!(view.contains("grading reporter would read"), "{view}");
+    let reflect = view
+        .lines()
+        .find(|l| l.contains(" reflect ("))
+        .expect("reflect");
+    assert!(
+        reflect.contains("5.00/5.00") && reflect.contains("pass"),
+        "{view}"
+    );
+    let smith = view
+        .lines()
+        .find(|l| l.contains(" smith_g1 ("))
+        .expect("smith_g1");
+    assert!(
+        smith.contains("0.00/6.00") && smith.contains("fail"),
+        "{view}"
+    );
+    assert!(
+        pbrlab::handout::stubs::edited(&dir).is_empty(),
+        "the try put the stubs back"
+    );
     let report = grade_through_cargo_run(&dir, &[]);
     assert_eq!(report.score, 0.0);
     assert!(report.max_score > 0.0);
@@ -434,12 +478,17 @@ fn the_handout_builds_tests_and_grades_without_solutions() {
     };
     let top = help(&["--help"]);
     assert!(top.contains("grade") && !top.contains("handout"), "{top}");
+    // `grade` offers nothing that needs the reference (another implementation, hidden
+    // cases, variants); `render` offers every implementation, the compiled reference's too.
     let grade = help(&["grade", "--help"]);
-    assert!(grade.contains("student"), "{grade}");
-    assert!(
-        !grade.contains("mixed") && !grade.contains("- reference"),
-        "{grade}"
-    );
+    assert!(grade.contains("--format"), "{grade}");
+    for option in ["--impl", "--hidden-seed", "--variant-key", "--student"] {
+        assert!(!grade.contains(option), "{option} in {grade}");
+    }
+    let render = help(&["render", "--help"]);
+    for choice in ["student", "reference", "mixed"] {
+        assert!(render.contains(choice), "{choice} in {render}");
+    }
     watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(&dir);
     one_broken_file_still_grades_through_cargo_run(&dir);
     // A student's own work never makes the README's test command fail: the tests about
@@ -808,9 +857,9 @@ fn cargo_outside_ci(dir: &Path, args: &[&str]) -> std::process::Output {
 }
 
 /// `pbrlab watch reflect` in a pseudo-terminal of the built handout at `dir`: the first
-/// table, the next hint on `h`, a save that rebuilds (cargo's progress shown) and
+/// screen, the next hint on `h`, a save that rebuilds (cargo's progress shown) and
 /// regrades to full marks, a save that does not compile (the compiler's message and
-/// COMPILE ERROR in the table), and `q` ending the watch.
+/// COMPILE ERROR in the table), and `q` ending the watch. Every screen fits 80×24.
 fn watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(dir: &Path) {
     let mut command = Command::new(dir.join("target/release/pbrlab"));
     command
@@ -819,50 +868,54 @@ fn watch_shows_the_rebuild_the_table_a_hint_and_a_compile_error(dir: &Path) {
         .env("PBRLAB_STATE_DIR", dir.join(".watch-state"))
         .env_remove("CARGO_TARGET_DIR");
     let mut watch = rexpect::session::spawn_command(command, Some(180_000)).expect("a pty");
-    expect(
-        &mut watch,
-        "at the start",
-        &["not attempted", "h: next hint for reflect"],
-    );
+    let (_, screen) = next_screen(&mut watch, "at the start");
+    assert!(screen.contains("not attempted (1): reflect"), "{screen}");
+    assert!(screen.contains("h: next hint for reflect"), "{screen}");
     key(&mut watch, "h");
-    expect(
-        &mut watch,
-        "after h",
-        &["hint 1/", "Still stuck? `h` again shows hint 2"],
-    );
+    let (_, screen) = next_screen(&mut watch, "after h");
+    for what in [
+        "hint 1/",
+        "Still stuck? `h` again shows hint 2",
+        "not attempted (1)",
+    ] {
+        assert!(screen.contains(what), "{what} in {screen}");
+    }
     let file = dir.join("exercises/reflect.rs");
     std::fs::copy(root().join("solutions/reflect.rs"), &file).unwrap();
-    expect(
-        &mut watch,
-        "after a save",
-        &[
-            "rebuilding and regrading",
-            "Compiling pbrlab-exercises",
-            "5/5",
-        ],
-    );
+    let (scrolled, screen) = next_screen(&mut watch, "after a save");
+    for what in ["rebuilding and regrading", "Compiling pbrlab-exercises"] {
+        assert!(scrolled.contains(what), "{what} in {scrolled}");
+    }
+    assert!(screen.contains("5/5"), "{screen}");
     std::fs::write(&file, "pub fn reflect(wo: Vec3, n: Vec3) -> Vec3 {\n").unwrap();
-    expect(
-        &mut watch,
-        "after a broken save",
-        &[
-            "rebuilding and regrading",
-            "exercises/reflect.rs",
-            "COMPILE ERROR",
-            "h: next hint for reflect",
-        ],
-    );
+    let (_, screen) = next_screen(&mut watch, "after a broken save");
+    for what in [
+        "› reflect",
+        "COMPILE ERROR",
+        "exercises/reflect.rs",
+        "h: next hint for reflect",
+    ] {
+        assert!(screen.contains(what), "{what} in {screen}");
+    }
     key(&mut watch, "q");
     watch.exp_eof().expect("q ends the watch");
 }
 
-/// Waits for each of `what` in turn in the watch's output.
-fn expect(watch: &mut rexpect::session::PtySession, when: &str, what: &[&str]) {
-    for what in what {
-        watch
-            .exp_string(what)
-            .unwrap_or_else(|e| panic!("{when}, watch never printed `{what}`: {e}"));
+/// Everything the watch printed up to its next keys line, and the screen it drew last (what
+/// follows the last clear), which must fit 80×24.
+fn next_screen(watch: &mut rexpect::session::PtySession, when: &str) -> (String, String) {
+    let printed = watch
+        .exp_string("q: quit")
+        .unwrap_or_else(|e| panic!("{when}, the watch drew no screen: {e}"))
+        + "q: quit";
+    let printed = crate::support::pty_text(&printed).replace('\r', "");
+    let screen = printed.rsplit("\x1b[2J\x1b[H").next().unwrap().to_string();
+    let lines: Vec<&str> = screen.lines().collect();
+    assert!(lines.len() <= 24, "{when}: {} rows\n{screen}", lines.len());
+    for line in &lines {
+        assert!(line.chars().count() <= 80, "{when}: {line}");
     }
+    (printed, screen)
 }
 
 /// Presses `key` in the watch's terminal.

@@ -88,7 +88,12 @@ pub fn runner_result(task: &TaskOutcome) -> RunnerResult {
 fn check_test(task: &TaskOutcome, check: &CheckResult, share: f64) -> Test {
     let mut message = check.summary.clone();
     // Already redacted to the course's feedback level (`super::redact`).
-    for line in &check.failures {
+    for line in check
+        .shrunk
+        .iter()
+        .map(|(full, _)| full)
+        .chain(&check.failures)
+    {
         message += "\n  ";
         message += line;
     }

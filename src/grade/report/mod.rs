@@ -8,13 +8,14 @@ pub mod images;
 pub mod junit;
 pub mod prairielearn;
 pub mod redact;
+pub mod screen;
 mod svg;
 mod text;
 
 pub use gradescope::gradescope;
 pub(crate) use html::escape;
 pub use html::write_html;
-pub use text::{COMPACT_LINES, Detail, WIDTH, details, report_notes, text};
+pub use text::{COMPACT_LINES, Detail, WIDTH, details, fit, report_notes, text, wrap};
 
 /// The output formats of `pbrlab grade --format`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]

@@ -27,10 +27,16 @@ fn diverging(z: f64) -> String {
     }
 }
 
+/// Room left of the cells for the cos θ axis, and below them for the φ axis.
+const LEFT: usize = 34;
+const BOTTOM: usize = 26;
+
 fn map(title: &str, h: &Histogram, colour: impl Fn(usize) -> String) -> String {
-    let (w, ht) = (h.bins.n_phi * CELL, h.bins.n_cos * CELL);
+    let (cw, ch) = (h.bins.n_phi * CELL, h.bins.n_cos * CELL);
+    let (w, ht) = (LEFT + cw, ch + BOTTOM);
     let mut s = format!(
-        "<figure><svg width=\"{w}\" height=\"{ht}\" viewBox=\"0 0 {w} {ht}\" role=\"img\" aria-label=\"{title}\">"
+        "<figure><svg width=\"{w}\" height=\"{ht}\" viewBox=\"0 0 {w} {ht}\" role=\"img\" \
+         aria-label=\"{title}\" font-size=\"9\" font-family=\"sans-serif\">"
     );
     for band in 0..h.bins.n_cos {
         for sector in 0..h.bins.n_phi {
@@ -39,11 +45,25 @@ fn map(title: &str, h: &Histogram, colour: impl Fn(usize) -> String) -> String {
             let _ = write!(
                 s,
                 "<rect x=\"{}\" y=\"{y}\" width=\"{CELL}\" height=\"{CELL}\" fill=\"{}\"/>",
-                sector * CELL,
+                LEFT + sector * CELL,
                 colour(band * h.bins.n_phi + sector)
             );
         }
     }
+    // The axes: cos θ from 1 (the normal, top) to 0 (the horizon), φ from 0 to 2π.
+    let _ = write!(
+        s,
+        "<text x=\"{x}\" y=\"8\" text-anchor=\"end\">1</text>\
+         <text x=\"{x}\" y=\"{ch}\" text-anchor=\"end\">0</text>\
+         <text x=\"{x}\" y=\"{mid}\" text-anchor=\"end\">cos θ</text>\
+         <text x=\"{LEFT}\" y=\"{ty}\">0</text>\
+         <text x=\"{w}\" y=\"{ty}\" text-anchor=\"end\">2π</text>\
+         <text x=\"{cx}\" y=\"{ty}\" text-anchor=\"middle\">φ</text>",
+        x = LEFT - 3,
+        mid = ch / 2 + 3,
+        ty = ch + 11,
+        cx = LEFT + cw / 2,
+    );
     let _ = write!(s, "</svg><figcaption>{title}</figcaption></figure>");
     s
 }
@@ -86,6 +106,12 @@ mod tests {
         };
         let svg = histogram(&h);
         assert_eq!(svg.matches("<rect").count(), 18);
+        assert_eq!(
+            svg.matches(">cos θ</text>").count(),
+            3,
+            "each map's axes are labelled"
+        );
+        assert_eq!(svg.matches(">φ</text>").count(), 3);
         assert!(
             svg.contains("rgb(255,255,255)"),
             "the largest count is white"

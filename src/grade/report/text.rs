@@ -1,11 +1,14 @@
 //! The terminal table.
 
 use crate::grade::output::fmt_num;
-use crate::grade::verdict::{GradeReport, TaskOutcome, TaskStatus, Visibility, format_points};
+use crate::grade::verdict::{
+    GradeReport, TaskOutcome, TaskStatus, Visibility, Worst, format_points,
+};
 use std::fmt::Write;
 
-/// The worst error of a task, short: `abs 2.1e-3 (rel 0.8 %)`.
-fn worst(outcome: &TaskOutcome) -> String {
+/// The worst error of a task, short: `2.1e-3 (40 % of tol)` where a tolerance decides, else
+/// `2.1e-3 (rel 8e-3)`.
+pub(super) fn worst(outcome: &TaskOutcome) -> String {
     if !matches!(
         outcome.status,
         TaskStatus::Passed | TaskStatus::Partial | TaskStatus::Failed
@@ -15,13 +18,25 @@ fn worst(outcome: &TaskOutcome) -> String {
     match outcome.worst() {
         Some(w) if w.error.abs.is_infinite() => "not comparable".into(),
         Some(w) if w.error.abs == 0.0 => "0".into(),
+        Some(Worst {
+            error,
+            share: Some(share),
+            ..
+        }) if share.is_finite() => {
+            let of = if *share < 10.0 {
+                format!("{:.0} % of tol", 100.0 * share)
+            } else {
+                format!("{}× tol", fmt_num(*share))
+            };
+            format!("{} ({of})", fmt_num(error.abs))
+        }
         Some(w) => format!("{} (rel {})", fmt_num(w.error.abs), fmt_num(w.error.rel)),
         None => "-".into(),
     }
 }
 
 /// `text` cut to `width` characters, with `…` where it was cut.
-fn fit(text: &str, width: usize) -> String {
+pub fn fit(text: &str, width: usize) -> String {
     if text.chars().count() <= width {
         return text.to_string();
     }
@@ -31,7 +46,7 @@ fn fit(text: &str, width: usize) -> String {
 
 /// A task's status as the table shows it: a scene waiting for several tasks says how many
 /// (the details below, and `pbrlab needs SCENE`, name them).
-fn status_cell(t: &TaskOutcome) -> String {
+pub(super) fn status_cell(t: &TaskOutcome) -> String {
     match &t.status {
         TaskStatus::NeedsTask { task } if task.contains(", ") => {
             format!("needs {} tasks", task.split(", ").count())
@@ -62,7 +77,7 @@ pub enum Detail {
 }
 
 /// One row of the table: at most 76 characters, so it fits an 80-column terminal.
-fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time: &str) {
+pub(super) fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time: &str) {
     let _ = writeln!(
         s,
         "{:<16} {:<15} {:>9}  {:<24} {:>7}",
@@ -77,7 +92,7 @@ fn row(s: &mut String, task: &str, status: &str, points: &str, worst: &str, time
 /// `line` as it is when it fits [`WIDTH`] (a compiler's message keeps its alignment), else
 /// broken at spaces into lines of at most that width (a longer word is cut), each
 /// continuation indented like `line` and two more.
-fn wrap(line: &str) -> Vec<String> {
+pub fn wrap(line: &str) -> Vec<String> {
     if line.chars().count() <= WIDTH {
         return vec![line.to_string()];
     }
@@ -341,6 +356,29 @@ mod tests {
             output: String::new(),
             seconds: 0.0,
         }
+    }
+
+    /// The worst error of a case that passed is shown against its tolerance, never as a
+    /// relative error that is large only because the expected value is near 0.
+    #[test]
+    fn the_worst_error_is_shown_as_a_share_of_its_tolerance() {
+        let mut t = failed_with(CheckKind::Values, 0.0);
+        t.status = TaskStatus::Passed;
+        let error = crate::grade::tolerance::Error {
+            abs: 5.3e-10,
+            rel: 1.64,
+        };
+        t.checks[0].worst = Some(Worst {
+            case: "refract(…)".into(),
+            error,
+            share: Some(0.02),
+        });
+        assert_eq!(worst(&t), "5.3e-10 (2 % of tol)");
+        t.status = TaskStatus::Failed;
+        t.checks[0].worst.as_mut().unwrap().share = Some(90.0);
+        assert_eq!(worst(&t), "5.3e-10 (90× tol)");
+        t.checks[0].worst.as_mut().unwrap().share = None;
+        assert!(worst(&t).contains("rel"), "{}", worst(&t));
     }
 
     /// A report in which every task of the worksheet failed with `lines` messages (one of

@@ -86,3 +86,10 @@ pub fn messages(checks: &[CheckResult]) -> String {
         .collect::<Vec<_>>()
         .join("\n")
 }
+
+/// What a pseudo-terminal printed, as rexpect hands it over (a char per byte), read back as
+/// the UTF-8 the program wrote: `…` is one column, not three.
+pub fn pty_text(read: &str) -> String {
+    let bytes: Vec<u8> = read.chars().map(|c| c as u32 as u8).collect();
+    String::from_utf8_lossy(&bytes).into_owned()
+}
