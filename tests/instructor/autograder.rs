@@ -485,25 +485,20 @@ fn both_packages_grade_real_submissions_end_to_end() {
         );
         String::from_utf8_lossy(&out.stdout).into_owned()
     };
-    let (score, total) = scores["correct"];
-    let view = try_package("gradescope", &gs, "correct");
+    // The stubs' submission: no render runs, so a try costs seconds here (the grading
+    // itself is what the runs above check).
+    let (score, total) = scores["stub"];
+    let view = try_package("gradescope", &gs, "stub");
     assert!(
         view.contains(&format!("Gradescope would show {score:.2} / {total:.2}")),
         "{view}"
     );
     assert!(
-        view.contains("passed") && !view.contains("failed"),
+        view.contains("failed") && !view.contains(" passed "),
         "{view}"
     );
-    let (score, total) = scores["non_compiling"];
-    let view = try_package("prairielearn", &pl, "non_compiling");
-    assert!(
-        view.contains(&format!(
-            "PrairieLearn would show {:.1} %",
-            100.0 * score / total
-        )),
-        "{view}"
-    );
+    let view = try_package("prairielearn", &pl, "stub");
+    assert!(view.contains("PrairieLearn would show 0.0 %"), "{view}");
 }
 
 /// `--try` on a submission that is not there says so, naming it, before building anything.
