@@ -35,8 +35,8 @@ fn tail(output: &std::process::Output) -> String {
     lines[lines.len().saturating_sub(15)..].join("\n")
 }
 
-/// Runs `script` (a bash script's text, or a file when `file`) in `dir` with `env`; its
-/// output goes to the terminal as it comes when `show`, and a failure names `step`.
+/// Runs the bash script `script` in `dir` with `env` (and no outer `CARGO_TARGET_DIR`); a
+/// failure names `step`, with the last lines it printed.
 fn bash(step: &str, dir: &Path, script: &str, env: &[(&str, &Path)]) -> anyhow::Result<()> {
     let output = Command::new("bash")
         .args(["-e", "-c", script])
@@ -84,12 +84,11 @@ fn lay_out(submission: &Path, to: &Path) -> anyhow::Result<()> {
 /// Builds the package in `package` as `platform` builds it, unless its `pbrlab` is built.
 fn build(platform: Platform, package: &Path) -> anyhow::Result<()> {
     let source = package.join(super::package::SOURCE);
-    if source.join("target/release/pbrlab").is_file() {
+    // GitHub Classroom's workflow builds in its grading step (`cargo run`).
+    if platform == Platform::GithubClassroom || source.join("target/release/pbrlab").is_file() {
         return Ok(());
     }
-    if platform != Platform::GithubClassroom {
-        eprintln!("building the package as the platform does (minutes; once)…");
-    }
+    eprintln!("building the package as the platform does (minutes; once)…");
     match platform {
         Platform::Gradescope => bash(
             "setup.sh (Gradescope's image build)",
@@ -261,22 +260,17 @@ fn classroom(template: &Path, submission: &Path, scratch: &Path) -> anyhow::Resu
         crate::handout::stubs::shipped(template, task)
     })?;
     let outputs = scratch.join("github-output");
-    let output = Command::new("bash")
-        .args(["-e", "-c", &script])
-        .current_dir(template)
-        .env("GITHUB_OUTPUT", &outputs)
-        .env("PBRLAB_STATE_DIR", scratch.join("state"))
-        .env_remove("CARGO_TARGET_DIR")
-        .output()
-        .context("the grading step: could not start bash")?;
+    let ran = bash(
+        "the workflow's grading step",
+        template,
+        &script,
+        &[
+            ("GITHUB_OUTPUT", &outputs),
+            ("PBRLAB_STATE_DIR", &scratch.join("state")),
+        ],
+    );
     drop(restore);
-    if !output.status.success() {
-        bail!(
-            "the workflow's grading step failed ({}); its last lines:\n{}",
-            output.status,
-            tail(&output)
-        );
-    }
+    ran?;
     let text = std::fs::read_to_string(&outputs).context("the grading step wrote no outputs")?;
     let mut view = String::from("GitHub Classroom's grading reporter would read:\n");
     let (mut score, mut max) = (0.0, 0.0);

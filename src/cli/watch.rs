@@ -74,12 +74,6 @@ pub const ROWS: usize = 24;
 /// The most rows a hint takes under the view (the rest is cut, and `hint` shows it all).
 const HINT_ROWS: usize = 12;
 
-/// What the watch shows under the grade: nothing, or the hint text of `h`.
-enum Below {
-    Nothing,
-    Hint(Vec<String>),
-}
-
 /// The keys line: at most [`WIDTH`] characters.
 fn keys_line(hint_for: TaskId) -> String {
     report::fit(
@@ -89,18 +83,14 @@ fn keys_line(hint_for: TaskId) -> String {
 }
 
 /// Clears the terminal and draws one screen: the view of `report` (the full text with
-/// `verbose`), what goes `below` it, and the keys.
+/// `verbose`), the lines `below` it (the hint of `h`, or none), and the keys.
 fn draw(
     report: Option<&GradeReport>,
     previous: Option<&GradeReport>,
-    below: &Below,
+    below: &[String],
     hint_for: TaskId,
     verbose: bool,
 ) -> anyhow::Result<()> {
-    let below: &[String] = match below {
-        Below::Nothing => &[],
-        Below::Hint(lines) => lines,
-    };
     let mut out = String::from("\x1b[2J\x1b[H");
     match report {
         Some(r) if verbose => out += &report::text(r, Detail::Verbose),
@@ -192,7 +182,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     draw(
         report.as_ref(),
         None,
-        &Below::Nothing,
+        &[],
         hint_task(saved, &args.tasks),
         args.verbose,
     )?;
@@ -203,7 +193,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             Some('q') => return Ok(()),
             Some('h') => {
                 let task = hint_task(saved, &args.tasks);
-                let below = Below::Hint(hint_lines(task)?);
+                let below = hint_lines(task)?;
                 draw(
                     report.as_ref(),
                     previous.as_ref(),
@@ -245,7 +235,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             draw(
                 report.as_ref(),
                 previous.as_ref(),
-                &Below::Nothing,
+                &[],
                 hint_task(saved, &args.tasks),
                 args.verbose,
             )?;
