@@ -77,17 +77,10 @@ pub mod panics;
 pub mod similarity;
 pub mod stability;
 pub mod tasks;
-pub mod timestamp;
 
+pub use pbrlab_course::{repository_root, timestamp};
 pub use pbrlab_renderer::{
     atomic_file, bsdf, compiled_reference, for_each_task_function, geometry, integrator, light,
     math, medium, optics, prelude, reference_library, render, sampling, scene, task_set,
     task_table, worksheet,
 };
-
-/// The repository this framework was built from (the workspace root, one folder above the
-/// framework's `src/`): where `scenes/`, `exercises/` and `.pbrlab/` are found by default.
-pub fn repository_root() -> &'static std::path::Path {
-    let framework = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    framework.parent().unwrap_or(framework)
-}

@@ -12,19 +12,32 @@
 //!
 //! libtest-mimic gives the test binary libtest's command line and output, so filters,
 //! `--list`, `--ignored` and test runners that read them work as with `#[test]`s.
+//!
+//! It links the course's table alone (`pbrlab-course`), not the grader: the grader is
+//! `pbrlab`'s, built once, and this test compiles in seconds and never links the student's
+//! crate (one exercise that does not compile cannot stop it).
 
 use libtest_mimic::{Arguments, Failed, Trial};
-use pbrlab::grade::report::{Detail, text};
-use pbrlab::grade::verdict::{GradeReport, TaskOutcome, TaskStatus};
-use pbrlab::worksheet::{TaskId, task_functions};
+use pbrlab_course::status::TaskStatus;
+use pbrlab_course::task::TaskId;
 use std::process::{Command, ExitCode};
+
+/// What this test reads of the grader's JSON report: each task's name and how it ended.
+#[derive(serde::Deserialize)]
+struct GradeReport {
+    tasks: Vec<TaskOutcome>,
+}
+
+/// One task of [`GradeReport`].
+#[derive(serde::Deserialize)]
+struct TaskOutcome {
+    task: String,
+    status: TaskStatus,
+}
 
 fn main() -> ExitCode {
     let args = Arguments::from_args();
-    let tasks: Vec<TaskId> = TaskId::ALL
-        .into_iter()
-        .filter(|t| !task_functions(*t).is_empty())
-        .collect();
+    let tasks = TaskId::ALL;
     let chosen: Vec<TaskId> = tasks
         .iter()
         .copied()
@@ -66,13 +79,14 @@ fn selected(args: &Arguments, name: &str) -> bool {
     args.filter.as_deref().is_none_or(matches) && !args.skip.iter().any(|s| matches(s))
 }
 
-/// The grader's report of `tasks` (JSON from `pbrlab grade`; its progress, a build of the
-/// worker among it, goes to the terminal as it happens), or why there is none.
-fn grade(tasks: &[TaskId]) -> Result<GradeReport, String> {
+/// `pbrlab grade` of `tasks`, without the render checks, in `format` (with `--verbose`, every
+/// line of what failed): its standard output, or why there is none. Its progress (a build
+/// of the grader or the worker among it) goes to the terminal as it happens.
+fn pbrlab_grade(tasks: &[&str], format: &str) -> Result<Vec<u8>, String> {
     let output = Command::new(env!("CARGO_BIN_EXE_pbrlab"))
         .arg("grade")
-        .args(tasks.iter().map(|t| t.name()))
-        .args(["--format", "json", "--no-renders"])
+        .args(tasks)
+        .args(["--format", format, "--no-renders", "--verbose"])
         .stderr(std::process::Stdio::inherit())
         .output()
         .map_err(|e| format!("could not start pbrlab: {e}"))?;
@@ -82,8 +96,14 @@ fn grade(tasks: &[TaskId]) -> Result<GradeReport, String> {
             output.status
         ));
     }
-    serde_json::from_slice(&output.stdout)
-        .map_err(|e| format!("the grader's report could not be read: {e}"))
+    Ok(output.stdout)
+}
+
+/// The grader's report of `tasks` (JSON from `pbrlab grade`), or why there is none.
+fn grade(tasks: &[TaskId]) -> Result<GradeReport, String> {
+    let names: Vec<&str> = tasks.iter().map(|t| t.name()).collect();
+    let json = pbrlab_grade(&names, "json")?;
+    serde_json::from_slice(&json).map_err(|e| format!("the grader's report could not be read: {e}"))
 }
 
 /// The test of `task`, from the grade, which graded it, or why there is none.
@@ -118,21 +138,14 @@ fn trial(task: TaskId, graded: Result<&GradeReport, &String>) -> Trial {
         ),
         TaskStatus::NoChecks => not_yet("no checks".into(), format!("{name} has no checks")),
         _ => {
-            let message = task_report(report, outcome);
+            // The grader's text report of the task alone, every line of what failed (graded
+            // again: the same seeds, so the same verdict).
+            let message = pbrlab_grade(&[name], "text")
+                .map(|text| String::from_utf8_lossy(&text).into_owned())
+                .unwrap_or_else(|why| why);
             Trial::test(name, move || Err(Failed::from(message)))
         }
     }
-}
-
-/// The grader's text report of `outcome` alone, every line of what failed.
-fn task_report(report: &GradeReport, outcome: &TaskOutcome) -> String {
-    let one = GradeReport {
-        tasks: vec![outcome.clone()],
-        score: outcome.points,
-        max_score: outcome.max_points,
-        ..report.clone()
-    };
-    text(&one, Detail::Verbose)
 }
 
 /// True for a task that was graded and did not pass (failed, partly passed, crashed, did

@@ -9,25 +9,23 @@ mod delegate;
 mod grade;
 mod grade_class;
 mod handout;
-mod hint;
 mod keys;
 mod needs;
 mod power;
 pub mod rebuild;
 mod render;
-mod reset;
 mod secret;
 mod similarity;
 mod stability;
 pub mod student_side;
-mod tasks;
 mod watch;
 
 use clap::{Parser, Subcommand};
+use pbrlab_course::cli::{LightCommand, hint};
 
 /// pbrlab: exercises, reference, renderer and grader for a physically based rendering course.
 #[derive(Parser, Debug)]
-#[command(name = "pbrlab", version, about)]
+#[command(name = "pbrlab", bin_name = "pbrlab", version)]
 pub struct Cli {
     /// What to do.
     #[command(subcommand)]
@@ -37,10 +35,10 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// List every task with its points and whether you have attempted it.
-    Tasks(tasks::Args),
-    /// Show the hints of a task, one level at a time.
-    Hint(hint::Args),
+    /// `tasks`, `hint` and `reset`: the commands the `pbrlab` binary runs before the rest
+    /// is built.
+    #[command(flatten)]
+    Light(LightCommand),
     /// Grade your tasks (or the reference) and print a report.
     Grade(grade::Args),
     /// Grade every submission in a folder (a subfolder or zip per student): CSV and summary.
@@ -55,8 +53,6 @@ pub enum Command {
     Autograder(autograder::Args),
     /// Regrade every time you save a file in exercises/.
     Watch(watch::Args),
-    /// Put the shipped stub of a task back (your version is kept in .pbrlab/reset/).
-    Reset(reset::Args),
     /// Write the student repository (no solutions) into a directory.
     #[command(hide = !cfg!(feature = "solutions"))]
     Handout(handout::Args),
@@ -73,35 +69,7 @@ pub enum Command {
     Power(power::Args),
 }
 
-/// The environment variable in which `pbrlab` passes [`invocation`] to a command that
-/// `pbrlab-student` runs for it.
-const INVOCATION: &str = "PBRLAB_INVOCATION";
-
-/// How the user started pbrlab, for messages that name another command (`{} hint TASK`):
-/// `cargo run --release --` when cargo started it, the bare name when it was found on
-/// `PATH`, otherwise the path as typed (`./target/release/pbrlab`).
-pub fn invocation() -> String {
-    if let Ok(passed) = std::env::var(INVOCATION) {
-        return passed;
-    }
-    let exe = std::env::current_exe().unwrap_or_default();
-    // `cargo run` (and `cargo test`) set the package's variables for the program it runs;
-    // the root package, whose binary this is, is `pbrlab-cli`.
-    if std::env::var_os("CARGO").is_some()
-        && std::env::var("CARGO_PKG_NAME").as_deref() == Ok("pbrlab-cli")
-    {
-        let profile = if exe.components().any(|c| c.as_os_str() == "debug") {
-            ""
-        } else {
-            " --release"
-        };
-        return format!("cargo run{profile} --");
-    }
-    match std::env::args().next() {
-        Some(typed) if typed.contains(std::path::MAIN_SEPARATOR) => typed,
-        _ => "pbrlab".into(),
-    }
-}
+pub use pbrlab_course::cli::{INVOCATION, invocation};
 
 /// Parses the command line and runs it; an error is printed with its causes. The `main` of
 /// the `pbrlab` binary, after it installs the reference's table.
@@ -133,14 +101,12 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         rebuild::ensure_student_binaries()?;
     }
     match cli.command {
-        Some(Command::Tasks(args)) => tasks::run(args),
-        Some(Command::Hint(args)) => hint::run(args),
+        Some(Command::Light(light)) => light.run(),
         Some(Command::Grade(args)) => grade::run(args),
         Some(Command::GradeClass(args)) => grade_class::run(args),
         Some(Command::Similarity(args)) => similarity::run(args),
         Some(Command::Autograder(args)) => autograder::run(args),
         Some(Command::Watch(args)) => watch::run(args),
-        Some(Command::Reset(args)) => reset::run(args),
         Some(Command::Handout(args)) => handout::run(args),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Needs(args)) => needs::run(args),

@@ -50,7 +50,7 @@ const VIEW_FAILED: i32 = 121;
 
 /// The packages whose units a build in the view compiles itself: the student's crate and
 /// the binaries that link it. Every other unit of the worker's build is the framework's.
-const STUDENT_PACKAGES: &[&str] = &["pbrlab-exercises", "pbrlab-worker", "pbrlab-cli"];
+const STUDENT_PACKAGES: &[&str] = &["pbrlab-exercises", "pbrlab-worker", "pbrlab-commands"];
 
 /// Variables of the grader's environment that a build in the view keeps: they change how
 /// cargo compiles (and so whether the framework's units are current), and they are the

@@ -13,6 +13,7 @@
 use super::worker::ImplSpec;
 use crate::worksheet::TaskId;
 use anyhow::{Context, anyhow, bail, ensure};
+use pbrlab_course::selection::FRAMEWORK_SELECTION;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::Command;
@@ -53,11 +54,17 @@ pub fn for_spec(spec: &ImplSpec) -> anyhow::Result<BTreeMap<String, PathBuf>> {
 }
 
 /// The packages every build of the reference's libraries selects (the one-task libraries
-/// here, the handout's whole compiled reference): `pbrlab-reference`, and the root package
-/// too, so that features resolve as in the instructor's own build and the libraries link
-/// the framework its binaries link (one compilation of it; alone, the reference's package
-/// resolves the dependencies' features differently and compiles them all again).
-pub const SELECTION: &[&str] = &["-p", "pbrlab-cli", "-p", "pbrlab-reference"];
+/// here, the handout's whole compiled reference): `pbrlab-reference` in the framework's
+/// selection ([`FRAMEWORK_SELECTION`]), so that features resolve as in the instructor's own
+/// build and the libraries link the framework its binaries link (one compilation of it).
+pub const SELECTION: &[&str] = &[
+    FRAMEWORK_SELECTION[0],
+    FRAMEWORK_SELECTION[1],
+    FRAMEWORK_SELECTION[2],
+    FRAMEWORK_SELECTION[3],
+    "-p",
+    "pbrlab-reference",
+];
 
 /// The arguments of `cargo` that build the one-task libraries (add `--release` for the
 /// release profile): [`SELECTION`], every example, and without the dependencies' debug

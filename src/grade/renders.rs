@@ -15,38 +15,7 @@ use crate::worksheet::Tasks;
 use anyhow::{Context, anyhow};
 use std::path::PathBuf;
 
-/// A scene graded by rendering it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RenderCheck {
-    /// The scene's file name in `scenes/`, without `.yaml`.
-    pub scene: &'static str,
-    /// Points the render is worth.
-    pub points: f64,
-}
-
-/// The graded scenes: one per family of materials, so each needs a different set of tasks.
-/// The hair scene is not among them: its fibres are thinner than a pixel at the graded size,
-/// so a pixel's samples are hit-or-miss and far from normal at any affordable count (the
-/// reference itself failed 0.6 % of its pixel-channels at 256 samples per pixel); the
-/// `kajiya_kay` task is graded by its values.
-pub const RENDER_CHECKS: [RenderCheck; 4] = [
-    RenderCheck {
-        scene: "cornell",
-        points: 4.0,
-    },
-    RenderCheck {
-        scene: "materials",
-        points: 4.0,
-    },
-    RenderCheck {
-        scene: "glass",
-        points: 4.0,
-    },
-    RenderCheck {
-        scene: "smoke",
-        points: 4.0,
-    },
-];
+pub use pbrlab_course::scenes::{RENDER_CHECKS, RenderCheck};
 
 /// Image size of graded renders (small: the z-test needs samples, not pixels).
 pub const WIDTH: u32 = 48;

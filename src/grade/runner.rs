@@ -16,6 +16,7 @@ use crate::implementation::ImplChoice;
 use crate::task_set::TaskSet;
 use crate::worksheet::TaskId;
 use anyhow::bail;
+pub use pbrlab_course::scenes::scene_entry;
 use std::collections::BTreeMap;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -369,11 +370,6 @@ fn no_checks(task: TaskId) -> TaskOutcome {
         output: String::new(),
         seconds: 0.0,
     }
-}
-
-/// The name a scene's render check has in reports.
-pub fn scene_entry(scene: &str) -> String {
-    format!("scene: {scene}")
 }
 
 /// The render checks: a scene whose tasks have not all passed is reported as needing them

@@ -15,6 +15,7 @@
 use super::build_view::{Framework, Mechanism, Toolchain, View, ViewInputs};
 use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
+use pbrlab_course::selection::FRAMEWORK_SELECTION;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::io::BufReader;
@@ -123,14 +124,14 @@ pub const BOUNDS: Bounds = Bounds {
 pub const SOURCE_CHECK: &str = "PBRLAB_SOURCE_CHECK";
 
 /// What cargo builds: the worker binary of its package (`src/worker/`; with
-/// [`StudentBuild::commands`], `pbrlab-student` beside it), with the root package selected
-/// too so that features resolve as in the `pbrlab` binary's own build and
-/// both link one compilation of the framework.
+/// [`StudentBuild::commands`], `pbrlab-student` beside it), in the framework's selection
+/// ([`FRAMEWORK_SELECTION`]), so it links the one compilation of the framework that
+/// `pbrlab-commands` links.
 pub const WORKER_SELECTION: &[&str] = &[
-    "-p",
-    "pbrlab-cli",
-    "-p",
-    "pbrlab-worker",
+    FRAMEWORK_SELECTION[0],
+    FRAMEWORK_SELECTION[1],
+    FRAMEWORK_SELECTION[2],
+    FRAMEWORK_SELECTION[3],
     "--bin",
     super::isolation::WORKER_BINARY,
 ];
@@ -370,10 +371,10 @@ impl StudentBuild<'_> {
             "build",
             "--release",
             "--message-format=json",
-            "-p",
-            "pbrlab-cli",
-            "-p",
-            "pbrlab-worker",
+            FRAMEWORK_SELECTION[0],
+            FRAMEWORK_SELECTION[1],
+            FRAMEWORK_SELECTION[2],
+            FRAMEWORK_SELECTION[3],
             "-p",
             "pbrlab",
             "-p",

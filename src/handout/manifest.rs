@@ -43,6 +43,10 @@ fn is_instructor_only(file: &Path) -> bool {
         if *src == "src" && *tasks == "tasks" && (*name == "variants.rs" || *name == "library.rs"))
 }
 
+/// The members' manifests that name the reference, rewritten as the root's is: the
+/// `pbrlab-commands` package links it in the instructor build.
+const REWRITTEN_MEMBERS: &[&str] = &["src/commands/Cargo.toml"];
+
 /// The files of the handout, relative to the repository root, and its Cargo.toml.
 #[derive(Clone, Debug)]
 pub struct Manifest {
@@ -50,6 +54,8 @@ pub struct Manifest {
     pub files: Vec<PathBuf>,
     /// The handout's Cargo.toml.
     pub cargo_toml: String,
+    /// The members' manifests the handout has rewritten (path from the root, text).
+    pub members: Vec<(PathBuf, String)>,
 }
 
 /// True when a test or bench source needs the reference solutions to build, or is about
@@ -121,6 +127,8 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf], tests: &str) -> anyhow::Resu
     let mut section = String::new();
     // Comment lines waiting for the dev-dependency they describe.
     let mut comments = String::new();
+    // Inside the instructor's `default-members = [` list (replaced by the handout's).
+    let mut in_default_members = false;
     let flush = |header: &str, body: &str, out: &mut String| {
         let is_target = header.starts_with("[[bench]]") || header.starts_with("[[test]]");
         if is_target {
@@ -146,7 +154,9 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf], tests: &str) -> anyhow::Resu
         out.push_str(body);
     };
     for line in text.split_inclusive('\n') {
-        if line.starts_with('[') {
+        if in_default_members {
+            in_default_members = !line.contains(']');
+        } else if line.starts_with('[') {
             flush(&section_header, &section, &mut out);
             section_header = line.to_string();
             section.clear();
@@ -154,6 +164,7 @@ fn rewrite_cargo_toml(text: &str, kept: &[PathBuf], tests: &str) -> anyhow::Resu
             section.push_str(EMPTY_SOLUTIONS_FEATURE);
         } else if section_header.trim() == "[workspace]" && line.starts_with("default-members") {
             section.push_str(HANDOUT_DEFAULT_MEMBERS);
+            in_default_members = !line.contains(']');
         } else if section_header.trim() == "[dev-dependencies]" && line.starts_with('#') {
             comments.push_str(line);
         } else if section_header.trim() == "[dev-dependencies]" && line.contains('=') {
@@ -222,6 +233,7 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
         rest.retain(|f| !f.starts_with("benches"));
     }
     rest.extend(select_tests(tests));
+    rest.retain(|f| !REWRITTEN_MEMBERS.iter().any(|m| f == Path::new(m)));
     rest.sort();
     let cargo_path = root.join("Cargo.toml");
     let cargo = std::fs::read_to_string(&cargo_path)
@@ -236,9 +248,18 @@ pub fn select(root: &Path) -> anyhow::Result<Manifest> {
             .with_context(|| format!("reading {}", path.display()))?;
     }
     let cargo_toml = rewrite_cargo_toml(&cargo, &rest, &tests).context("Cargo.toml")?;
+    let mut members = Vec::new();
+    for member in REWRITTEN_MEMBERS {
+        let path = root.join(member);
+        let text = std::fs::read_to_string(&path)
+            .with_context(|| format!("reading {}", path.display()))?;
+        let rewritten = rewrite_cargo_toml(&text, &rest, &tests).context(*member)?;
+        members.push((PathBuf::from(member), rewritten));
+    }
     Ok(Manifest {
         files: rest,
         cargo_toml,
+        members,
     })
 }
 
@@ -266,10 +287,13 @@ mod tests {
 
     #[test]
     fn cargo_toml_keeps_the_dev_dependencies_the_student_tests_name_and_one_default_member() {
-        let text = "[workspace]\nmembers = [\n    \"src\",\n]\ndefault-members = [\".\", \"src\"]\n\n[dev-dependencies]\n# The student's crate, linked in-process.\npbrlab-exercises = { path = \"exercises\" }\nserde_json = \"1\"\n# A harness.\nlibtest-mimic = \"0.8\"\n";
+        let text = "[workspace]\nmembers = [\n    \"src\",\n]\ndefault-members = [\n    \".\",\n    \"src\",\n]\n\n[dev-dependencies]\n# The student's crate, linked in-process.\npbrlab-exercises = { path = \"exercises\" }\nserde_json = \"1\"\n# A harness.\nlibtest-mimic = \"0.8\"\n";
         let tests = "use libtest_mimic::Trial;\nfn f() { serde_json::from_str(\"1\"); }\n";
         let out = rewrite_cargo_toml(text, &[PathBuf::from("src/lib.rs")], tests).unwrap();
-        assert!(out.contains("default-members = [\".\"]\n"), "{out}");
+        assert!(
+            out.contains("default-members = [\".\"]\n\n[dev-dependencies]"),
+            "{out}"
+        );
         assert!(!out.contains("exercises"), "{out}");
         assert!(!out.contains("in-process"), "{out}");
         assert!(

@@ -10,7 +10,7 @@
 
 pub mod compiled_reference;
 pub mod manifest;
-pub mod stubs;
+pub use pbrlab_course::stubs;
 
 use crate::atomic_file::write as write_atomic;
 use anyhow::{Context, bail};
@@ -59,6 +59,10 @@ pub fn write(root: &Path, dest: &Path) -> anyhow::Result<Vec<PathBuf>> {
         written.push(name);
     }
     write_atomic(&dest_abs.join("Cargo.toml"), manifest.cargo_toml.as_bytes())?;
+    for (member, text) in &manifest.members {
+        write_atomic(&dest_abs.join(member), text.as_bytes())?;
+        written.push(member.clone());
+    }
     write_atomic(&dest_abs.join("README.md"), README.as_bytes())?;
     prune_lock_file(&dest_abs)?;
     written.push("Cargo.toml".into());

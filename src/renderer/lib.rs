@@ -25,7 +25,6 @@
 //!
 //! [`Tasks`]: worksheet::Tasks
 
-pub mod atomic_file;
 pub mod bsdf;
 pub mod compiled_reference;
 pub mod geometry;
@@ -37,8 +36,9 @@ pub mod optics;
 pub mod render;
 pub mod sampling;
 pub mod scene;
-pub mod task_set;
 pub mod worksheet;
+
+pub use pbrlab_course::{atomic_file, task_set};
 
 /// What a task file needs in scope: vectors, π, the task trait, the parameter types.
 pub mod prelude {

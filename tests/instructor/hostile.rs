@@ -546,7 +546,7 @@ fn contains(haystack: &[u8], needle: &[u8]) -> bool {
 fn the_worker_binary_holds_no_expected_data_or_reference_render() {
     let answers = stored_answers();
     assert!(answers.len() >= 10, "{} stored files", answers.len());
-    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
+    let grader = std::fs::read(crate::support::commands()).expect("the grader's binary");
     let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
     for (file, piece) in &answers {
         // The grader embeds them (so this search finds what it looks for) ...
@@ -564,10 +564,11 @@ fn the_worker_binary_holds_no_expected_data_or_reference_render() {
 
 #[test]
 fn only_the_worker_binaries_link_the_student_crate() {
-    let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
-    let grader = std::fs::read(pbrlab).expect("the grader's binary");
-    let built =
-        pbrlab::cli::rebuild::ensure_student_binaries_beside(pbrlab).expect("the worker binaries");
+    let commands = crate::support::commands();
+    let grader = std::fs::read(&commands).expect("the grader's binary");
+    let front = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the pbrlab binary");
+    let built = pbrlab::cli::rebuild::ensure_student_binaries_beside(&commands)
+        .expect("the worker binaries");
     // The stubs' functions keep their symbols (`_ZN16pbrlab_exercises7reflect…`).
     for binary in [built.worker, built.student] {
         let bytes = std::fs::read(&binary).expect("a worker binary");
@@ -577,11 +578,13 @@ fn only_the_worker_binaries_link_the_student_crate() {
             binary.display()
         );
     }
-    assert!(
-        !contains(&grader, b"16pbrlab_exercises"),
-        "the pbrlab binary links student code: a compile error in an exercise file would stop \
-         `cargo run` before pbrlab starts"
-    );
+    for (name, binary) in [("pbrlab", &front), ("pbrlab-commands", &grader)] {
+        assert!(
+            !contains(binary, b"16pbrlab_exercises"),
+            "the {name} binary links student code: a compile error in an exercise file would \
+             stop `cargo run` before pbrlab starts"
+        );
+    }
 }
 
 /// The start of the legacy-mangled symbol of every function of `task`'s reference
@@ -595,7 +598,7 @@ fn reference_symbol(task: TaskId) -> Vec<u8> {
 #[test]
 fn no_worker_holds_the_reference_of_the_task_it_grades() {
     use pbrlab::grade::worker::ImplSpec;
-    let grader = std::fs::read(env!("CARGO_BIN_EXE_pbrlab")).expect("the grader's binary");
+    let grader = std::fs::read(crate::support::commands()).expect("the grader's binary");
     let worker = std::fs::read(crate::support::worker()).expect("the worker's binary");
     assert!(
         !contains(&worker, b"16pbrlab_solutions"),

@@ -21,11 +21,28 @@ pub fn install() {
     });
 }
 
+/// `pbrlab-commands`, the binary beside the `pbrlab` these tests run that every command but
+/// `tasks`, `hint` and `reset` runs in (it links the reference), current: `pbrlab` builds it
+/// when it is not, here on its first `--version`.
+pub fn commands() -> std::path::PathBuf {
+    static CURRENT: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    CURRENT
+        .get_or_init(|| {
+            let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
+            let out = std::process::Command::new(pbrlab)
+                .arg("--version")
+                .output()
+                .expect("pbrlab runs");
+            assert!(out.status.success(), "pbrlab --version: {out:?}");
+            pbrlab.with_file_name("pbrlab-commands")
+        })
+        .clone()
+}
+
 /// The worker binary that runs the student's code, beside the `pbrlab` these tests run
 /// (built by the first test that asks, as `pbrlab` builds it before running student code).
 pub fn worker() -> std::path::PathBuf {
-    let pbrlab = std::path::Path::new(env!("CARGO_BIN_EXE_pbrlab"));
-    let built = pbrlab::cli::rebuild::ensure_student_binaries_beside(pbrlab)
+    let built = pbrlab::cli::rebuild::ensure_student_binaries_beside(&commands())
         .expect("building pbrlab-worker");
     built.worker
 }

@@ -5,8 +5,8 @@
 //! repository whose first commit, tagged [`TAG`], is the handout as written; in the
 //! instructor repository, which has neither, the committed exercises are the stubs.
 
+use crate::task::TaskId;
 use crate::task_set::TaskSet;
-use crate::worksheet::TaskId;
 use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

@@ -1,7 +1,7 @@
 //! Sets of tasks: which tasks a mixed implementation takes from the student, and which
 //! tasks a scene needs.
 
-use crate::worksheet::TaskId;
+use crate::task::TaskId;
 
 /// A set of tasks, as a bit mask over [`TaskId`]. Used to say which tasks run the student's
 /// code in a mixed implementation (the grader's `implementation::mixed`), and which tasks a scene needs.

@@ -1,6 +1,9 @@
-use crate::grade::history::state_dir;
-use crate::grade::verdict::TaskStatus;
-use crate::worksheet::TaskId;
+//! `pbrlab hint`: a task's hints ([`crate::task::TaskInfo::hints`]), one level at a time,
+//! the levels shown remembered in `.pbrlab/hints-seen.json`.
+
+use crate::history::{Progress, state_dir};
+use crate::status::TaskStatus;
+use crate::task::TaskId;
 use anyhow::{Context, anyhow};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -53,7 +56,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 /// The first task in worksheet order whose latest grade (`pbrlab tasks`) is not full marks:
 /// the one to work on next.
 pub fn next_task() -> TaskId {
-    let progress = crate::grade::history::load_progress();
+    let progress: Progress = crate::history::load_progress();
     TaskId::ALL
         .into_iter()
         .find(|t| {

@@ -1,5 +1,7 @@
-use crate::handout::stubs;
-use crate::worksheet::TaskId;
+//! `pbrlab reset`: a task's shipped stub back (the student's version kept), or undone.
+
+use crate::stubs;
+use crate::task::TaskId;
 use anyhow::anyhow;
 
 /// Arguments of `pbrlab reset`.
@@ -15,7 +17,7 @@ pub struct Args {
 /// Puts the shipped stub of a task back, keeping the student's version in `.pbrlab/reset/`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let task = TaskId::parse(&args.task).map_err(|e| anyhow!(e))?;
-    let keep = crate::grade::history::state_dir().join("reset");
+    let keep = crate::history::state_dir().join("reset");
     if args.undo {
         match stubs::undo_reset(crate::repository_root(), task, &keep)? {
             None => println!(

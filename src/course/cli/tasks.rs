@@ -1,9 +1,11 @@
-use crate::grade::history::{self, Graded, Progress};
-use crate::grade::renders::RENDER_CHECKS;
-use crate::grade::runner::scene_entry;
-use crate::grade::verdict::TaskStatus;
+//! `pbrlab tasks`: the task table and the scenes' render checks with the student's
+//! progress, in 80 columns.
+
+use crate::history::{self, Graded, Progress, Standing};
+use crate::scenes::{RENDER_CHECKS, scene_entry};
+use crate::status::TaskStatus;
+use crate::task::TaskId;
 use crate::task_set::TaskSet;
-use crate::worksheet::{TaskId, task_functions};
 
 /// Arguments of `pbrlab tasks`.
 #[derive(clap::Args, Debug, Default)]
@@ -26,14 +28,13 @@ fn status(task: TaskId, progress: &Progress, attempted: TaskSet) -> (String, Str
         Some(graded) if graded.outcome.status == TaskStatus::NoChecks => {
             (points, graded.outcome.status.label())
         }
-        _ if task_functions(task).is_empty() => (points, "with the renderer".into()),
         _ if attempted.contains(task) => (points, "edited, ungraded".into()),
         _ => (points, "not attempted".into()),
     }
 }
 
 /// True when `exercises/<task>.rs` is newer than the task's grade.
-fn changed_since(task: TaskId, graded: &Graded) -> bool {
+fn changed_since(task: TaskId, graded: &Graded<Standing>) -> bool {
     let file = crate::repository_root()
         .join("exercises")
         .join(format!("{}.rs", task.name()));
@@ -85,8 +86,8 @@ fn row(entry: &str, points: &str, status: &str, title: &str) -> String {
 /// Prints the task table and the scenes' render checks with the student's progress, in 80
 /// columns: each one's latest `pbrlab grade`, otherwise which tasks are still stubs.
 pub fn run(_args: Args) -> anyhow::Result<()> {
-    let progress = history::load_progress();
-    let attempted = crate::handout::stubs::edited(crate::repository_root());
+    let progress: Progress = history::load_progress();
+    let attempted = crate::stubs::edited(crate::repository_root());
     println!("{}", row("task", "points", "status", "title"));
     let mut total = 0.0;
     let mut stale = false;
