@@ -71,16 +71,15 @@ pub mod converge;
 pub mod entropy;
 pub mod grade;
 pub mod handout;
-pub mod html_escape;
 pub mod implementation;
 pub mod panics;
-pub mod similarity;
 pub mod stability;
 pub mod tasks;
 
-pub use pbrlab_course::{repository_root, timestamp};
+pub use pbrlab_course::{html_escape, repository_root, timestamp};
 pub use pbrlab_renderer::{
     atomic_file, bsdf, compiled_reference, for_each_task_function, geometry, integrator, light,
     math, medium, optics, prelude, reference_library, render, sampling, scene, task_set,
     task_table, worksheet,
 };
+pub use pbrlab_similarity as similarity;

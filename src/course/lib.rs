@@ -4,7 +4,8 @@
 //! worksheet's tasks and their points and hints ([`task`]), the scenes graded by rendering
 //! ([`scenes`]), the student's progress as the grader records it ([`history`], [`status`]),
 //! the shipped stubs ([`stubs`]), and the commands that need nothing more ([`cli`]:
-//! `tasks`, `hint`, `reset`). The `pbrlab` binary links only this crate, so a student's
+//! `tasks`, `hint`, `reset`), with three small pieces every layer above shares ([`atomic_file`],
+//! [`timestamp`], [`html_escape`]). The `pbrlab` binary links only this crate, so a student's
 //! first command builds in seconds and the rest (renderer, grader) is built on first use.
 //! Every other crate of the workspace builds on it; the renderer re-exports [`task`] and
 //! [`task_set`] under its `worksheet` and `task_set`.
@@ -12,6 +13,7 @@
 pub mod atomic_file;
 pub mod cli;
 pub mod history;
+pub mod html_escape;
 pub mod scenes;
 pub mod selection;
 pub mod status;

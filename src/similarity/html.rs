@@ -4,7 +4,7 @@
 //! anchors are built from indices, never from names.
 
 use super::{PairScore, PairSummary, TaskComparison, TaskScore};
-use crate::html_escape::escape;
+use pbrlab_course::html_escape::escape;
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write;
 
