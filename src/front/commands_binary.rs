@@ -1,7 +1,7 @@
 //! `pbrlab-commands` (`src/commands/`), kept current beside the `pbrlab` binary and handed
 //! the command line. It is built by cargo, with cargo's progress, when it is missing, or
 //! older than this binary or than any file it is built from (the workspace's manifests,
-//! `src/`, `solutions/` and the reference renders the grader embeds): the same test by
+//! `src/` and `solutions/`): the same test by
 //! modification times that keeps the worker binaries current. Cargo decides what to
 //! compile; a build that finds nothing to do leaves a stamp, so the next command does not
 //! ask again.
@@ -21,13 +21,7 @@ const COMMANDS_BINARY: &str = "pbrlab-commands";
 const STAMP: &str = ".pbrlab-commands-current";
 
 /// The files and folders of the repository `pbrlab-commands` is built from.
-const SOURCES: [&str; 5] = [
-    "Cargo.toml",
-    "Cargo.lock",
-    "src",
-    "solutions",
-    "tests/snapshots/renders",
-];
+const SOURCES: [&str; 4] = ["Cargo.toml", "Cargo.lock", "src", "solutions"];
 
 /// CPU time of a first build of `pbrlab-commands` after the `pbrlab` binary's (a fresh
 /// handout, two cores, warm registry; measured, see the closing note of issue 44), for the

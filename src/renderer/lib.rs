@@ -19,7 +19,7 @@
 //! renderer's types: `path_trace` and `mis` take a [`Scene`](scene::Scene) and trace rays
 //! through it, `delta_tracking` samples a [`Medium`](medium::Medium). The student's crate
 //! (`exercises/`) and the reference's (`solutions/`) depend on this crate only; the grader
-//! (package `pbrlab`, `src/`) sits above it. The student's crate re-exports the modules a
+//! (package `pbrlab`, `src/grader/`) sits above it. The student's crate re-exports the modules a
 //! task may use, and not the framework's integrators, so a student cannot forward a task to
 //! them. See `src/ARCHITECTURE.md`.
 //!

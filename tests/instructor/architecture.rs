@@ -22,7 +22,7 @@ fn rust_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
 }
 
 /// True when `file` is the map's `entry`, where a `*` stands for any part of one path
-/// segment (`src/tasks/*/cases.rs`, `exercises/*.rs`).
+/// segment (`src/grader/tasks/*/cases.rs`, `exercises/*.rs`).
 fn matches(entry: &str, file: &str) -> bool {
     let segment = |e: &str, f: &str| match e.split_once('*') {
         Some((head, tail)) => {
@@ -137,7 +137,7 @@ fn paths(code: &str) -> Vec<String> {
     out
 }
 
-/// The module files of the package folder `root` (`src/grade`), by module path relative to
+/// The module files of the package folder `root` (`src/grader/grade`), by module path relative to
 /// it: `values` for `values.rs`, `report` for `report/mod.rs`.
 fn modules(root: &Path) -> Vec<(String, PathBuf)> {
     let mut files = Vec::new();
@@ -271,23 +271,26 @@ fn circles(graph: &[(String, Vec<String>)]) -> Vec<Vec<String>> {
 
 #[test]
 fn the_grader_the_class_runs_and_the_commands_import_in_one_direction() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/grader");
     for name in ["grade", "autograder", "cli"] {
         let graph = imports(&root.join(name), name);
-        assert!(graph.len() > 5, "src/{name}: {graph:?}");
+        assert!(graph.len() > 5, "src/grader/{name}: {graph:?}");
         let found = circles(&graph);
-        assert!(found.is_empty(), "import circles in src/{name}/: {found:?}");
+        assert!(
+            found.is_empty(),
+            "import circles in src/grader/{name}/: {found:?}"
+        );
     }
 }
 
-/// The side of the trust boundary the file map gives each file of `src/grade/`, by module
+/// The side of the trust boundary the file map gives each file of `src/grader/grade/`, by module
 /// path relative to it (`values`, `report/text`, `` for `mod.rs`).
 fn sides() -> Vec<(String, String)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let doc = std::fs::read_to_string(root.join("src/ARCHITECTURE.md")).unwrap();
     doc.lines()
         .filter_map(|l| {
-            let rest = l.strip_prefix("- `src/grade/")?;
+            let rest = l.strip_prefix("- `src/grader/grade/")?;
             let (file, rest) = rest.split_once("` — [")?;
             let (side, _) = rest.split_once(']')?;
             let module = file.trim_end_matches(".rs").trim_end_matches("mod");
@@ -302,14 +305,16 @@ fn sides() -> Vec<(String, String)> {
 /// each file is on.
 #[test]
 fn no_worker_side_or_shared_file_of_the_grader_imports_a_parent_side_one() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/grade");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/grader/grade");
     let sides = sides();
     let side = |module: &str| {
         sides
             .iter()
             .find(|(m, _)| m == module)
             .map(|(_, s)| s.as_str())
-            .unwrap_or_else(|| panic!("src/ARCHITECTURE.md gives src/grade/{module} no side"))
+            .unwrap_or_else(|| {
+                panic!("src/ARCHITECTURE.md gives src/grader/grade/{module} no side")
+            })
     };
     assert!(
         sides

@@ -89,7 +89,7 @@ fn the_packages_hold_what_each_service_runs() {
             "Cargo.toml",
             "Cargo.lock",
             "solutions/mis.rs",
-            "src/lib.rs",
+            "src/grader/lib.rs",
             "scenes/cornell.yaml",
         ] {
             assert!(source.join(file).is_file(), "{file} in the package");
@@ -144,7 +144,9 @@ fn a_results_file_is_written_even_when_grading_cannot_start() {
     ] {
         let root = dir.path().join(script);
         std::fs::create_dir_all(root.join(submission)).unwrap();
-        let template = repository().join("src/autograder/templates").join(script);
+        let template = repository()
+            .join("src/grader/autograder/templates")
+            .join(script);
         let mut command = Command::new("bash");
         command
             .arg(&template)

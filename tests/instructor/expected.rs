@@ -1,4 +1,4 @@
-//! Instructor test: the grader's stored expected data (src/tasks/<task>/expected.snap)
+//! Instructor test: the grader's stored expected data (src/grader/tasks/<task>/expected.snap)
 //! is what the reference computes today.
 //!
 //! Each task's data is generated from the reference and compared with the stored snapshot by
@@ -54,7 +54,7 @@ fn stored_expected_data_is_the_references() {
         let data = generate(task).unwrap_or_else(|e| panic!("{task}: {e:#}"));
         let json = serde_json::to_string_pretty(&data).expect("serialisable");
         // The task's folder, from this file's (tests/instructor/).
-        settings.set_snapshot_path(format!("../../src/tasks/{task}"));
+        settings.set_snapshot_path(format!("../../src/grader/tasks/{task}"));
         settings.bind(|| insta::assert_snapshot!("expected", json));
     }
 }

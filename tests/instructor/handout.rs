@@ -197,7 +197,7 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
         );
         let stored = !pbrlab::grade::value_cases::public_inputs(task).is_empty()
             || !pbrlab::grade::catalogue::sampling_setups(task).is_empty();
-        let snap = format!("src/tasks/{task}/expected.snap");
+        let snap = format!("src/grader/tasks/{task}/expected.snap");
         assert_eq!(names.contains(&snap), stored, "{snap}");
         if !stored {
             continue;
@@ -210,7 +210,7 @@ fn the_handout_leaves_out_the_solutions_and_everything_that_reveals_them() {
     }
     for check in pbrlab::grade::renders::RENDER_CHECKS {
         for kind in ["mean", "variance"] {
-            let exr = format!("tests/snapshots/renders/{}.{kind}.exr", check.scene);
+            let exr = format!("src/grader/renders/{}.{kind}.exr", check.scene);
             assert!(names.contains(&exr), "{exr}");
         }
     }

@@ -33,7 +33,7 @@ fn breach(what: impl std::fmt::Display) {
 fn read_answers() {
     let root = pbrlab::repository_root();
     for file in [
-        root.join("src/tasks/smith_g1/expected.snap"),
+        root.join("src/grader/tasks/smith_g1/expected.snap"),
         root.join("solutions/smith_g1.rs"),
         root.join("Cargo.toml"),
         PathBuf::from("/proc/self/exe"),
@@ -64,7 +64,7 @@ fn write_outside() {
     let new_files = [
         canary.with_extension("new"),
         root.join("scenes/breach.yaml"),
-        root.join("src/tasks/smith_g1/breach.snap"),
+        root.join("src/grader/tasks/smith_g1/breach.snap"),
         std::env::current_exe()
             .unwrap_or_default()
             .with_file_name("breach"),
@@ -513,16 +513,16 @@ fn a_result_without_outputs_fails_every_check_even_with_the_nonce() {
     }
 }
 
-/// Pieces of every stored expected-data file (`src/tasks/<task>/expected.snap`) and
-/// reference render (`tests/snapshots/renders/`): the middle 64 bytes.
+/// Pieces of every stored expected-data file (`src/grader/tasks/<task>/expected.snap`) and
+/// reference render (`src/grader/renders/`): the middle 64 bytes.
 fn stored_answers() -> Vec<(String, Vec<u8>)> {
     let root = pbrlab::repository_root();
-    let expected = std::fs::read_dir(root.join("src/tasks"))
+    let expected = std::fs::read_dir(root.join("src/grader/tasks"))
         .expect("the tasks' folders")
         .flatten()
         .map(|task| task.path().join("expected.snap"))
         .filter(|file| file.is_file());
-    let renders = std::fs::read_dir(root.join("tests/snapshots/renders"))
+    let renders = std::fs::read_dir(root.join("src/grader/renders"))
         .expect("stored renders")
         .flatten()
         .map(|entry| entry.path());

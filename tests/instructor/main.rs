@@ -11,7 +11,7 @@
 //! - the reference renderer against closed forms: `reference_values`, `render_*`.
 //!
 //! Support code shared by the modules: `support` (the reference with functions replaced,
-//! and each task's variants from `src/tasks/<task>/variants.rs`), `shipped_stubs`.
+//! and each task's variants from `src/grader/tasks/<task>/variants.rs`), `shipped_stubs`.
 #![cfg(feature = "solutions")]
 
 #[path = "../junit_schema.rs"]

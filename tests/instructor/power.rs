@@ -1,5 +1,5 @@
 //! The power of the statistical checks: errors of known size put into the reference are
-//! caught as often as each task declares (`POWER` in its `src/tasks/<task>/cases.rs`), while
+//! caught as often as each task declares (`POWER` in its `src/grader/tasks/<task>/cases.rs`), while
 //! the reference itself fails no more often than the grader's significance says.
 
 use pbrlab::grade::catalogue::{declared_power, estimators, sampling_setups};

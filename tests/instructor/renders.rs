@@ -1,5 +1,5 @@
 //! Instructor test: the stored reference renders of the graded scenes
-//! (tests/snapshots/renders/<scene>.{mean,variance}.exr) agree with fresh reference renders
+//! (src/grader/renders/<scene>.{mean,variance}.exr) agree with fresh reference renders
 //! by the grader's own image check, and a biased render (or a wrong path tracer) does not.
 //!
 //! Missing files are written; after a deliberate change to a scene or the reference,
@@ -16,7 +16,7 @@ use std::path::Path;
 
 #[test]
 fn stored_reference_renders_agree_with_fresh_ones() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots/renders");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/grader/renders");
     let update = std::env::var_os("PBRLAB_UPDATE_RENDERS").is_some();
     for check in RENDER_CHECKS {
         let scene = load(check.scene).expect("a graded scene loads");

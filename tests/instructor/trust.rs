@@ -138,7 +138,7 @@ fn catalogue() -> Vec<(&'static str, String, usize)> {
             "reads the expected data with include_str!",
             smith_g1(
                 "    EXPECTED.len() as f32",
-                "const EXPECTED: &str = include_str!(\"../src/tasks/smith_g1/expected.snap\");",
+                "const EXPECTED: &str = include_str!(\"../src/grader/tasks/smith_g1/expected.snap\");",
             ),
             6,
         ),

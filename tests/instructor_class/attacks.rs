@@ -88,7 +88,7 @@ pub fn catalogue(repository: &Path, submissions: &Path, out: &Path) -> Vec<Attac
         (
             "read_variants",
             "reads the tests' variants (correct implementations among them)",
-            format!("{r}/src/tasks/smith_g1/variants.rs"),
+            format!("{r}/src/grader/tasks/smith_g1/variants.rs"),
             not_empty.into(),
         ),
         (
@@ -118,13 +118,13 @@ pub fn catalogue(repository: &Path, submissions: &Path, out: &Path) -> Vec<Attac
         (
             "read_framework_source",
             "reads the grader's source",
-            format!("{r}/src/grade/checks.rs"),
+            format!("{r}/src/grader/grade/checks.rs"),
             not_empty.into(),
         ),
         (
             "read_expected_data",
             "reads the stored expected data",
-            format!("{r}/src/tasks/smith_g1/expected.snap"),
+            format!("{r}/src/grader/tasks/smith_g1/expected.snap"),
             not_empty.into(),
         ),
         (

@@ -1,5 +1,5 @@
 //! The implementations the tests grade the grader with, from each task's
-//! `src/tasks/<task>/variants.rs` (one module per task, generated from
+//! `src/grader/tasks/<task>/variants.rs` (one module per task, generated from
 //! [`pbrlab::for_each_task!`]): known-wrong, correct-but-different and naive ones.
 
 use super::patch::{Patch, Variant};
@@ -40,7 +40,7 @@ macro_rules! variants {
             #[doc = concat!("The variants of `", stringify!($module), "`.")]
             pub mod $module {
                 include!(concat!(
-                    env!("CARGO_MANIFEST_DIR"), "/src/tasks/", stringify!($module), "/variants.rs"
+                    env!("CARGO_MANIFEST_DIR"), "/src/grader/tasks/", stringify!($module), "/variants.rs"
                 ));
             }
         )*

@@ -1,4 +1,4 @@
-//! Warps the tests' variants share (`src/tasks/<task>/variants.rs`).
+//! Warps the tests' variants share (`src/grader/tasks/<task>/variants.rs`).
 
 use glam::{Vec2, Vec3};
 use std::f32::consts::PI;
