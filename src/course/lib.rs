@@ -12,6 +12,7 @@
 
 pub mod atomic_file;
 pub mod cli;
+pub mod commands_binary;
 pub mod history;
 pub mod html_escape;
 pub mod scenes;

@@ -3,12 +3,11 @@
 //! fresh handout. It runs `tasks`, `hint` and `reset` itself, and hands every other command
 //! (and `--help`) to `pbrlab-commands` (`src/commands/`: the renderer, the grader and the
 //! reference), which it builds first when it is missing or older than its sources
-//! ([`commands_binary`]).
-
-mod commands_binary;
+//! ([`pbrlab_course::commands_binary`]).
 
 use clap::Parser;
 use pbrlab_course::cli::{Light, LightCommand};
+use pbrlab_course::commands_binary;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {

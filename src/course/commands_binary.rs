@@ -1,13 +1,12 @@
-//! `pbrlab-commands` (`src/commands/`), kept current beside the `pbrlab` binary and handed
-//! the command line. It is built by cargo, with cargo's progress, when it is missing, or
-//! older than this binary or than any file it is built from (the workspace's manifests,
-//! `src/` and `solutions/`): the same test by
-//! modification times that keeps the worker binaries current. Cargo decides what to
-//! compile; a build that finds nothing to do leaves a stamp, so the next command does not
-//! ask again.
+//! How the `pbrlab` binary (`src/front/`) hands a command to `pbrlab-commands`
+//! (`src/commands/`), kept current beside it. Cargo builds it, with its progress, when it
+//! is missing, or older than the `pbrlab` binary or than any file it is built from (the
+//! workspace's manifests, `src/` and `solutions/`): the same test by modification times
+//! that keeps the worker binaries current. Cargo decides what to compile; a build that
+//! finds nothing to do leaves a stamp, so the next command does not ask again.
 
+use crate::selection::FRAMEWORK_SELECTION;
 use anyhow::{Context, bail};
-use pbrlab_course::selection::FRAMEWORK_SELECTION;
 use std::ffi::OsString;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -28,13 +27,13 @@ const SOURCES: [&str; 4] = ["Cargo.toml", "Cargo.lock", "src", "solutions"];
 /// estimate shown before it.
 const FIRST_BUILD_CPU_SECONDS: f64 = 215.0;
 
-/// Runs `args` (the whole command line) in `pbrlab-commands`, building it first when it is
-/// not current. On Unix this process becomes it (same process, so signals, the terminal and
+/// Runs `args` (the whole command line) in `pbrlab-commands` beside the running binary,
+/// building it first when it is not current. On Unix this process becomes it (same process, so signals, the terminal and
 /// the exit status are its own); elsewhere it waits and exits with its status.
 pub fn hand_over(args: &[OsString]) -> anyhow::Result<()> {
     let exe = std::env::current_exe().context("locating the pbrlab binary")?;
     let commands = exe.with_file_name(format!("{COMMANDS_BINARY}{}", std::env::consts::EXE_SUFFIX));
-    if !current(&exe, &commands) {
+    if !current(&exe, &commands, crate::repository_root()) {
         build(&exe, &commands)?;
     }
     let mut command = Command::new(&commands);
@@ -82,13 +81,12 @@ fn newest_under(path: &Path) -> Option<SystemTime> {
 }
 
 /// True when `commands` exists and it (or the stamp of the last build that found it
-/// current) is at least as new as `exe` and every source.
-fn current(exe: &Path, commands: &Path) -> bool {
+/// current) is at least as new as `exe` and every source of the repository at `root`.
+fn current(exe: &Path, commands: &Path, root: &Path) -> bool {
     let Some(binary) = modified(commands) else {
         return false;
     };
     let built = binary.max(modified(&commands.with_file_name(STAMP)).unwrap_or(binary));
-    let root = pbrlab_course::repository_root();
     let newest = SOURCES
         .iter()
         .filter_map(|s| newest_under(&root.join(s)))
@@ -107,15 +105,24 @@ fn profile_args(profile_dir: &Path) -> Vec<OsString> {
     }
 }
 
-/// Builds `commands` with cargo into the target folder `exe` is in, with the profile it was
-/// built with and the framework's selection (so it shares the workers' compilation of the
+/// Builds `commands` with cargo into the target folder `exe` is in (outside one, uses it as
+/// it is, or says how to build it), with the profile it was built with and the framework's
+/// selection (so it shares the workers' compilation of the
 /// framework); cargo's progress shows on a terminal, and only its errors elsewhere.
 fn build(exe: &Path, commands: &Path) -> anyhow::Result<()> {
     let profile_dir = exe.parent().context("the pbrlab binary has no folder")?;
-    let target_dir: PathBuf = profile_dir
-        .parent()
-        .context("the pbrlab binary is not in a target folder")?
-        .to_path_buf();
+    // A cargo profile folder (`target/release`) keeps its fingerprints beside the binaries.
+    let target_dir: PathBuf = match profile_dir.parent() {
+        Some(target) if profile_dir.join(".fingerprint").is_dir() => target.to_path_buf(),
+        // Copied out of it: used as it is, as cargo cannot build there.
+        _ if commands.exists() => return Ok(()),
+        _ => bail!(
+            "{} is missing beside {}, which is not in cargo's target folder: build it with \
+             `cargo build --release -p {COMMANDS_BINARY}` in the repository and put it there",
+            commands.display(),
+            exe.display()
+        ),
+    };
     let terminal = std::io::stderr().is_terminal();
     if terminal && !commands.exists() {
         let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
@@ -128,7 +135,7 @@ fn build(exe: &Path, commands: &Path) -> anyhow::Result<()> {
         );
     }
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let manifest = pbrlab_course::repository_root().join("Cargo.toml");
+    let manifest = crate::repository_root().join("Cargo.toml");
     let mut command = Command::new(&cargo);
     command
         .arg("build")
@@ -157,4 +164,65 @@ fn build(exe: &Path, commands: &Path) -> anyhow::Result<()> {
     }
     std::fs::write(commands.with_file_name(STAMP), b"")
         .with_context(|| format!("writing {}", commands.with_file_name(STAMP).display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    /// Writes `path` (and its folder) with the modification time `at`.
+    fn file_at(path: &Path, at: SystemTime) {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::File::create(path)
+            .unwrap()
+            .set_modified(at)
+            .unwrap();
+    }
+
+    #[test]
+    fn the_commands_binary_is_current_until_a_source_or_the_front_is_newer() {
+        let dir = tempfile::tempdir().unwrap();
+        let (root, bin) = (dir.path().join("repo"), dir.path().join("target/release"));
+        let (exe, commands) = (bin.join("pbrlab"), bin.join(COMMANDS_BINARY));
+        let t = |s: u64| SystemTime::UNIX_EPOCH + Duration::from_secs(1_700_000_000 + s);
+        file_at(&root.join("src/grader/lib.rs"), t(0));
+        file_at(&root.join("Cargo.toml"), t(0));
+        file_at(&exe, t(1));
+        assert!(!current(&exe, &commands, &root), "missing");
+        file_at(&commands, t(2));
+        assert!(current(&exe, &commands, &root));
+        // A source edited since; build output and hidden folders do not count.
+        file_at(&root.join("src/target/x.rs"), t(9));
+        file_at(&root.join("src/.pbrlab/x.json"), t(9));
+        assert!(current(&exe, &commands, &root));
+        file_at(&root.join("solutions/reflect.rs"), t(3));
+        assert!(!current(&exe, &commands, &root), "older than a source");
+        // A build that found it current leaves a stamp.
+        file_at(&bin.join(STAMP), t(4));
+        assert!(current(&exe, &commands, &root));
+        file_at(&exe, t(5));
+        assert!(!current(&exe, &commands, &root), "older than the front");
+    }
+
+    #[test]
+    fn cargo_builds_with_the_profile_of_the_folder_the_front_is_in() {
+        let args = |dir: &str| profile_args(Path::new(dir));
+        assert!(args("target/debug").is_empty());
+        assert_eq!(args("target/release"), ["--release"]);
+        assert_eq!(args("target/profiling"), ["--profile", "profiling"]);
+    }
+
+    #[test]
+    fn outside_a_target_folder_a_copy_is_used_as_it_is_and_a_missing_one_is_explained() {
+        let dir = tempfile::tempdir().unwrap();
+        let (exe, commands) = (dir.path().join("pbrlab"), dir.path().join(COMMANDS_BINARY));
+        let error = build(&exe, &commands).unwrap_err().to_string();
+        assert!(
+            error.contains("cargo build --release -p pbrlab-commands"),
+            "{error}"
+        );
+        std::fs::write(&commands, b"").unwrap();
+        build(&exe, &commands).expect("the copy is used, no cargo run");
+    }
 }
