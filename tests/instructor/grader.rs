@@ -254,7 +254,7 @@ fn failure_messages_name_the_case_input_and_cause() {
     let text = messages(&checks);
     assert!(
         text.contains(
-            "fresnel_schlick(cos=0.76604444, 1.5→1.0): got 0.04067, expected 0.2456 (dense→less dense: use cos θt)"
+            "fresnel_schlick(cos_theta_i=0.76604444, eta_i=1.5, eta_t=1.0): got 0.04067, expected 0.2456 (dense→less dense: use cos θt)"
         ),
         "{text}"
     );

@@ -414,7 +414,7 @@ fn what_code_prints_of_its_inputs_never_shows_a_hidden_one() {
         shown.join("\n")
     );
     let leak = |call: &Call| match call {
-        Call::SmithG1 { alpha, .. } => Some(format!("{LEAK} {}", alpha.to_bits())),
+        Call::smith_g1 { alpha, .. } => Some(format!("{LEAK} {}", alpha.to_bits())),
         _ => None,
     };
     // The attack prints α alone: a hidden case shares its α with a public one now and then

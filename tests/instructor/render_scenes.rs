@@ -1,7 +1,7 @@
 //! Every scene in scenes/ loads and renders a few samples with the reference; the image
 //! files are written and read back; the built-in probe scene is valid.
 
-use pbrlab::grade::probe::probe_scene;
+use pbrlab::grade::argument::probe_scene;
 use pbrlab::render::{RenderOptions, output, render};
 use pbrlab::scene::{LoadOptions, Scene};
 use pbrlab_solutions::TASKS as Reference;

@@ -270,7 +270,7 @@ fn judge_plausibility(
 /// surface where, for a test BRDF with a closed-form albedo, that albedo is the reported
 /// `max_albedo` (within 25 %, Monte Carlo noise and the maximum over directions).
 fn judge_worst_wi(got: &Output, call: &Call) -> Result<(), String> {
-    let Call::BrdfCheck { brdf, .. } = call else {
+    let Call::brdf_check { brdf, .. } = call else {
         return Ok(());
     };
     let (Some(Output::Numbers(w)), Some(reported)) = (
@@ -322,9 +322,9 @@ mod tests {
     fn case(rule: Rule, expected: Output) -> ValueCase {
         ValueCase {
             name: "t".into(),
-            call: Call::ReciprocityGap {
+            call: Call::reciprocity_gap {
                 brdf: TestBrdf::IncidentOnly,
-                seed: 0,
+                sampler: 0,
                 pairs: 1,
             },
             rule,
@@ -398,7 +398,7 @@ mod tests {
     fn unity_judges_ratios_and_refuses_an_empty_or_rejected_list() {
         let c = ValueCase {
             name: "jacobian".into(),
-            call: Call::CosinePdf { w: glam::Vec3::Z },
+            call: Call::cosine_pdf { w: glam::Vec3::Z },
             rule: Rule::Unity {
                 tolerance: 2e-3,
                 share: 0.9,

@@ -58,14 +58,14 @@ pub const JACOBIAN: Param = Param::new(
     "u",
     &["sampler", "points", "h"],
     |c| match c {
-        Call::SampleJacobian { points, .. } => Some(points.len() as f64),
+        Call::sample_jacobian { points, .. } => Some(points.len() as f64),
         _ => None,
     },
     1.0,
     1e4,
 );
 
-/// The Jacobian cases of a sampler (see [`Call::SampleJacobian`]): 400 points spread over
+/// The Jacobian cases of a sampler (see [`Call::sample_jacobian`]): 400 points spread over
 /// the square away from its edges, a finite-difference step of 1e-3 (its truncation and
 /// rounding stay near 1e-4), judged to 2e-3 at 90 % of the points, so that a warp 1 % off
 /// its pdf fails while a correct warp with seams (a concentric map) passes.
@@ -78,7 +78,7 @@ pub fn jacobian_case(name: &str, sampler: SampleCall) -> CaseInput {
         .collect();
     CaseInput::new(
         name,
-        Call::SampleJacobian {
+        Call::sample_jacobian {
             sampler,
             points,
             h: 1e-3,

@@ -30,6 +30,7 @@
 //! test holds it): a panic, an endless loop, a stack overflow, an abort, a runaway
 //! allocation or an early `exit` in student code costs that task and nothing else.
 
+pub mod argument;
 pub mod build_view;
 pub mod calibration;
 pub mod call;
@@ -56,6 +57,7 @@ pub mod references;
 pub mod render_check;
 pub mod renders;
 pub mod report;
+pub mod rounding;
 pub mod runner;
 pub mod sampling;
 pub mod sandbox;

@@ -1,6 +1,6 @@
 //! Shrinking a failing value case: from the simplest graded input that fails, simpler
 //! inputs of the same contract are tried on the student's code, round by round, and the
-//! simplest that still fails is what the report names (`shrunk to smith_g1(w=(1, 0, 0),
+//! simplest that still fails is what the report names (`shrunk to smith_g1(w=(1.0, 0.0, 0.0),
 //! alpha=0.5)`), as property-based testing tools do with a failing example.
 //!
 //! A step changes one input: a number to one with fewer significant digits (0, ±1, the
@@ -350,15 +350,15 @@ mod tests {
     #[test]
     fn a_unit_direction_shrinks_to_unit_directions_with_rounder_angles() {
         let w = Vec3::new(0.3, 0.4, 0.2).normalize();
-        let call = Call::SmithG1 { w, alpha: 0.37 };
+        let call = Call::smith_g1 { w, alpha: 0.37 };
         let found = candidates(&call);
         assert!(
             found
                 .iter()
-                .any(|c| matches!(c, Call::SmithG1 { alpha, .. } if *alpha == 0.4))
+                .any(|c| matches!(c, Call::smith_g1 { alpha, .. } if *alpha == 0.4))
         );
         for c in &found {
-            let Call::SmithG1 { w, .. } = c else {
+            let Call::smith_g1 { w, .. } = c else {
                 panic!("{c}")
             };
             assert!((w.length() - 1.0).abs() < 1e-5, "{c}");
@@ -367,7 +367,7 @@ mod tests {
         // θ kept, φ made 0: y = 0 and the same height.
         assert!(found.iter().any(|c| matches!(
             c,
-            Call::SmithG1 { w: v, .. } if v.y == 0.0 && (v.z - w.z).abs() < 1e-6
+            Call::smith_g1 { w: v, .. } if v.y == 0.0 && (v.z - w.z).abs() < 1e-6
         )));
     }
 }

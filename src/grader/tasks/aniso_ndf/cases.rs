@@ -21,7 +21,7 @@ const D: &str = "D = 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²), αx al
 fn ndf(name: &str, h: Vec3, alpha_x: f32, alpha_y: f32) -> CaseInput {
     CaseInput::new(
         name,
-        Call::AnisoNdf {
+        Call::aniso_ndf {
             h,
             alpha_x,
             alpha_y,
@@ -47,7 +47,7 @@ pub fn fixed() -> Vec<CaseInput> {
         ndf("smooth, h = n", Vec3::Z, 0.05, 0.05),
         CaseInput::new(
             "errata: below the horizon",
-            Call::AnisoNdf {
+            Call::aniso_ndf {
                 h: Vec3::new(0.5, 0.5, -std::f32::consts::FRAC_1_SQRT_2),
                 alpha_x: 0.5,
                 alpha_y: 0.5,
@@ -59,7 +59,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn of(c: &Call) -> Option<(Vec3, f32, f32)> {
     match c {
-        Call::AnisoNdf {
+        Call::aniso_ndf {
             h,
             alpha_x,
             alpha_y,

@@ -26,7 +26,7 @@ fn at_degrees(deg: f32) -> Vec3 {
 }
 
 fn ndf(name: &str, h: Vec3, alpha: f32) -> CaseInput {
-    CaseInput::new(name, Call::BeckmannNdf { h, alpha })
+    CaseInput::new(name, Call::beckmann_ndf { h, alpha })
         .rule(Rule::Close(TAIL))
         .note(D)
 }
@@ -51,7 +51,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn of(c: &Call) -> Option<(Vec3, f32)> {
     match c {
-        Call::BeckmannNdf { h, alpha } => Some((*h, *alpha)),
+        Call::beckmann_ndf { h, alpha } => Some((*h, *alpha)),
         _ => None,
     }
 }

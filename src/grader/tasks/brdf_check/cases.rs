@@ -17,9 +17,9 @@ const ODD_K: f32 = 0.005;
 fn check(name: &str, brdf: TestBrdf, seed: u64, albedo: Option<f64>) -> CaseInput {
     CaseInput::new(
         name,
-        Call::BrdfCheck {
+        Call::brdf_check {
             brdf,
-            seed,
+            sampler: seed,
             samples: SAMPLES,
         },
     )
@@ -104,9 +104,9 @@ pub const DOMAIN: &[Param] = &[
     Param::new(
         "brdf_check",
         "Lambertian albedo",
-        &["brdf", "seed"],
+        &["brdf", "sampler"],
         |c| match c {
-            Call::BrdfCheck {
+            Call::brdf_check {
                 brdf: TestBrdf::Lambert { albedo },
                 ..
             } => Some(*albedo as f64),
@@ -121,7 +121,7 @@ pub const DOMAIN: &[Param] = &[
         "samples",
         &["samples"],
         |c| match c {
-            Call::BrdfCheck { samples, .. } => Some(*samples as f64),
+            Call::brdf_check { samples, .. } => Some(*samples as f64),
             _ => None,
         },
         1.0,

@@ -18,7 +18,7 @@ fn at_degrees(deg: f32) -> Vec3 {
 fn ct(name: &str, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32, f0: Vec3) -> CaseInput {
     CaseInput::new(
         name,
-        Call::CookTorrance {
+        Call::cook_torrance {
             wo,
             wi,
             alpha_x,
@@ -109,7 +109,7 @@ pub fn fixed() -> Vec<CaseInput> {
 /// The microfacet inputs of a Cook-Torrance call.
 fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     match c {
-        Call::CookTorrance {
+        Call::cook_torrance {
             wo,
             wi,
             alpha_x,
@@ -147,7 +147,7 @@ pub const DOMAIN: &[Param] = &[
 /// The `f0` of a Cook-Torrance call.
 fn f0_of(c: &Call) -> Option<Vec3> {
     match c {
-        Call::CookTorrance { f0, .. } => Some(*f0),
+        Call::cook_torrance { f0, .. } => Some(*f0),
         _ => None,
     }
 }

@@ -25,7 +25,7 @@ pub fn setups() -> Vec<SampleCall> {
 }
 
 pub fn fixed() -> Vec<CaseInput> {
-    let pdf = |name: &str, w: Vec3| CaseInput::new(name, Call::CosinePdf { w }).note(PDF);
+    let pdf = |name: &str, w: Vec3| CaseInput::new(name, Call::cosine_pdf { w }).note(PDF);
     vec![
         pdf("normal", Vec3::Z),
         pdf("45°", Vec3::new(0.0, 1.0, 1.0).normalize()),
@@ -39,7 +39,7 @@ pub fn fixed() -> Vec<CaseInput> {
 /// `cosine_sample(u)`: any point of the unit square.
 pub const DOMAIN: &[Param] = &[
     cosine("cosine_pdf", "cos θ of w", &["w"], |c| match c {
-        Call::CosinePdf { w } => Some(cos_z(*w)),
+        Call::cosine_pdf { w } => Some(cos_z(*w)),
         _ => None,
     }),
     crate::grade::case_input::JACOBIAN,
@@ -51,7 +51,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
         .map(|_| {
             let cos = d.value(&DOMAIN[0]);
             let w = d.direction_at(Vec3::Z, cos);
-            CaseInput::new("", Call::CosinePdf { w }).note(PDF)
+            CaseInput::new("", Call::cosine_pdf { w }).note(PDF)
         })
         .collect()
 }

@@ -28,7 +28,7 @@ fn note(cos_theta_i: f32, eta_i: f32, eta_t: f32) -> Option<&'static str> {
 fn schlick(name: &str, cos_theta_i: f32, eta_i: f32, eta_t: f32) -> CaseInput {
     let case = CaseInput::new(
         name,
-        Call::FresnelSchlick {
+        Call::fresnel_schlick {
             cos_theta_i,
             eta_i,
             eta_t,
@@ -41,7 +41,7 @@ fn schlick(name: &str, cos_theta_i: f32, eta_i: f32, eta_t: f32) -> CaseInput {
 }
 
 fn r0(name: &str, eta_i: f32, eta_t: f32) -> CaseInput {
-    CaseInput::new(name, Call::SchlickR0 { eta_i, eta_t }).note(R0)
+    CaseInput::new(name, Call::schlick_r0 { eta_i, eta_t }).note(R0)
 }
 
 fn cos_deg(deg: f32) -> f32 {
@@ -99,7 +99,7 @@ pub fn fixed() -> Vec<CaseInput> {
 /// angle when going to a less dense medium.
 pub const DOMAIN: &[Param] = &[
     index_ratio("schlick_r0", "η_i/η_t", &["eta_i", "eta_t"], |c| match c {
-        Call::SchlickR0 { eta_i, eta_t } => Some(*eta_i as f64 / *eta_t as f64),
+        Call::schlick_r0 { eta_i, eta_t } => Some(*eta_i as f64 / *eta_t as f64),
         _ => None,
     }),
     index_ratio(
@@ -107,7 +107,7 @@ pub const DOMAIN: &[Param] = &[
         "η_i/η_t",
         &["eta_i", "eta_t"],
         |c| match c {
-            Call::FresnelSchlick { eta_i, eta_t, .. } => Some(*eta_i as f64 / *eta_t as f64),
+            Call::fresnel_schlick { eta_i, eta_t, .. } => Some(*eta_i as f64 / *eta_t as f64),
             _ => None,
         },
     ),
@@ -116,7 +116,7 @@ pub const DOMAIN: &[Param] = &[
         "cos_theta_i",
         &["cos_theta_i"],
         |c| match c {
-            Call::FresnelSchlick { cos_theta_i, .. } => Some(*cos_theta_i as f64),
+            Call::fresnel_schlick { cos_theta_i, .. } => Some(*cos_theta_i as f64),
             _ => None,
         },
         0.0,
@@ -125,7 +125,7 @@ pub const DOMAIN: &[Param] = &[
     .boundaries(UPPER_COS_BOUNDARIES)
     .special(&[1.000_000_1]),
     critical("fresnel_schlick", "sin²θt", &[], |c| match c {
-        Call::FresnelSchlick {
+        Call::fresnel_schlick {
             cos_theta_i,
             eta_i,
             eta_t,

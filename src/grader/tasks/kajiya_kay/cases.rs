@@ -19,7 +19,7 @@ fn kk(name: &str, wo: Vec3, wi: Vec3) -> CaseInput {
     };
     CaseInput::new(
         name,
-        Call::KajiyaKay {
+        Call::kajiya_kay {
             wo,
             wi,
             tangent: Vec3::Z,
@@ -52,7 +52,7 @@ pub fn fixed() -> Vec<CaseInput> {
         .note(SHEET),
         CaseInput::new(
             "errata: fractional exponent off the cone",
-            Call::KajiyaKay {
+            Call::kajiya_kay {
                 wo: Vec3::new(0.0, 0.5, 0.866_025_4),
                 wi,
                 tangent: Vec3::Z,
@@ -69,7 +69,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn of(c: &Call) -> Option<(Vec3, Vec3, Vec3, &KajiyaKayParams)> {
     match c {
-        Call::KajiyaKay {
+        Call::kajiya_kay {
             wo,
             wi,
             tangent,
@@ -173,7 +173,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
                 ks: d.colour(&DOMAIN[4]),
                 exponent: d.value(&DOMAIN[5]) as f32,
             };
-            let call = Call::KajiyaKay {
+            let call = Call::kajiya_kay {
                 wo,
                 wi,
                 tangent,

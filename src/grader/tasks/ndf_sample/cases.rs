@@ -30,7 +30,7 @@ fn at(theta_deg: f32, phi_deg: f32) -> Vec3 {
 fn pdf(name: &str, wo: Vec3, wi: Vec3, alpha_x: f32, alpha_y: f32) -> CaseInput {
     CaseInput::new(
         name,
-        Call::NdfPdf {
+        Call::ndf_pdf {
             wo,
             wi,
             alpha_x,
@@ -74,7 +74,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     match c {
-        Call::NdfPdf {
+        Call::ndf_pdf {
             wo,
             wi,
             alpha_x,

@@ -25,15 +25,15 @@ fn phong(name: &str, wo: Vec3, wi: Vec3, kd: f32, ks: f32, exponent: f32) -> Cas
         ks: Vec3::splat(ks),
         exponent,
     };
-    CaseInput::new(name, Call::Phong { wo, wi, params })
+    CaseInput::new(name, Call::phong { wo, wi, params })
 }
 
 fn gap(name: &str, brdf: TestBrdf, seed: u64) -> CaseInput {
     CaseInput::new(
         name,
-        Call::ReciprocityGap {
+        Call::reciprocity_gap {
             brdf,
-            seed,
+            sampler: seed,
             pairs: 2000,
         },
     )
@@ -128,7 +128,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn of(c: &Call) -> Option<(Vec3, Vec3, &PhongParams)> {
     match c {
-        Call::Phong { wo, wi, params } => Some((*wo, *wi, params)),
+        Call::phong { wo, wi, params } => Some((*wo, *wi, params)),
         _ => None,
     }
 }
@@ -182,9 +182,9 @@ pub const DOMAIN: &[Param] = &[
     Param::new(
         "reciprocity_gap",
         "pairs",
-        &["brdf", "seed", "pairs"],
+        &["brdf", "sampler", "pairs"],
         |c| match c {
-            Call::ReciprocityGap { pairs, .. } => Some(*pairs as f64),
+            Call::reciprocity_gap { pairs, .. } => Some(*pairs as f64),
             _ => None,
         },
         1.0,
@@ -211,7 +211,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
                 ks: d.colour(&DOMAIN[4]),
                 exponent: d.value(&DOMAIN[5]) as f32,
             };
-            CaseInput::new("", Call::Phong { wo, wi, params }).note(PHONG)
+            CaseInput::new("", Call::phong { wo, wi, params }).note(PHONG)
         })
         .collect()
 }

@@ -13,7 +13,7 @@ pub fn fixed() -> Vec<CaseInput> {
     vec![
         CaseInput::new(
             "worksheet §1.5",
-            Call::Reflect {
+            Call::reflect {
                 wo: Vec3::new(0.6, 0.8, 0.0),
                 n: Vec3::Y,
             },
@@ -21,7 +21,7 @@ pub fn fixed() -> Vec<CaseInput> {
         .note(AWAY),
         CaseInput::new(
             "errata: normal of length 2",
-            Call::Reflect {
+            Call::reflect {
                 wo: Vec3::new(-0.6, 0.8, 0.0),
                 n: Vec3::new(0.0, 2.0, 0.0),
             },
@@ -29,7 +29,7 @@ pub fn fixed() -> Vec<CaseInput> {
         .note("n need not have unit length: normalise it"),
         CaseInput::new(
             "grazing",
-            Call::Reflect {
+            Call::reflect {
                 wo: Vec3::X,
                 n: Vec3::Z,
             },
@@ -37,7 +37,7 @@ pub fn fixed() -> Vec<CaseInput> {
         .note(AWAY),
         CaseInput::new(
             "normal incidence",
-            Call::Reflect {
+            Call::reflect {
                 wo: Vec3::Z,
                 n: Vec3::Z,
             },
@@ -51,15 +51,15 @@ pub fn fixed() -> Vec<CaseInput> {
 /// result keeps it).
 pub const DOMAIN: &[Param] = &[
     cosine("reflect", "cos(wo, n)", &["wo", "n"], |c| match c {
-        Call::Reflect { wo, n } => Some(cos_between(*wo, *n)),
+        Call::reflect { wo, n } => Some(cos_between(*wo, *n)),
         _ => None,
     }),
     length("reflect", "|n|", &["n"], |c| match c {
-        Call::Reflect { n, .. } => Some(n.length() as f64),
+        Call::reflect { n, .. } => Some(n.length() as f64),
         _ => None,
     }),
     length("reflect", "|wo|", &["wo"], |c| match c {
-        Call::Reflect { wo, .. } => Some(wo.length() as f64),
+        Call::reflect { wo, .. } => Some(wo.length() as f64),
         _ => None,
     }),
 ];
@@ -73,7 +73,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
             let wo = d.direction_at(n, cos);
             let n = n * d.value(&DOMAIN[1]) as f32;
             let wo = wo * d.value(&DOMAIN[2]) as f32;
-            CaseInput::new("", Call::Reflect { wo, n })
+            CaseInput::new("", Call::reflect { wo, n })
                 .note("n need not have unit length; keep the length of wo and its angle to n")
         })
         .collect()

@@ -2,7 +2,8 @@
 
 use crate::grade::case_input::CaseInput;
 use crate::grade::catalogue::indices::{ETA, critical, eta_pair, index_ratio, sin2_t};
-use crate::grade::call::{Call, StackInput};
+use crate::grade::argument::StackInput;
+use crate::grade::call::Call;
 use crate::grade::case::Rule;
 use crate::grade::domain::{Boundary, Draw, Param, Spread, cos_between, length, upper_cosine};
 use crate::grade::tolerance::Tolerance;
@@ -37,7 +38,7 @@ pub fn fixed() -> Vec<CaseInput> {
     let refract = |name: &str, wi: Vec3, eta_i: f32, eta_t: f32| {
         CaseInput::new(
             name,
-            Call::Refract {
+            Call::refract {
                 wi,
                 n: Vec3::Z,
                 eta_i,
@@ -46,12 +47,12 @@ pub fn fixed() -> Vec<CaseInput> {
         )
     };
     let critical = |name: &str, eta_i: f64, eta_t: f64| {
-        CaseInput::new(name, Call::CriticalAngle { eta_i, eta_t })
+        CaseInput::new(name, Call::critical_angle { eta_i, eta_t })
             .rule(Rule::Close(Tolerance::F64))
             .note(CRITICAL)
     };
     let layers = |name: &str, theta_deg: f64, stack: StackInput| {
-        CaseInput::new(name, Call::RefractStack { theta_deg, stack })
+        CaseInput::new(name, Call::refract_stack { theta_deg, stack })
             .rule(Rule::Close(STACK_TOLERANCE))
             .note(STACK)
     };
@@ -69,7 +70,7 @@ pub fn fixed() -> Vec<CaseInput> {
         refract("glass→air 40°", at_degrees(40.0), 1.5, 1.0),
         CaseInput::new(
             "errata: normal of length 2",
-            Call::Refract {
+            Call::refract {
                 wi: at_degrees(30.0),
                 n: Vec3::new(0.0, 0.0, 2.0),
                 eta_i: 1.0,
@@ -119,7 +120,7 @@ pub fn fixed() -> Vec<CaseInput> {
 
 fn refract_of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
     match c {
-        Call::Refract {
+        Call::refract {
             wi,
             n,
             eta_i,
@@ -131,7 +132,7 @@ fn refract_of(c: &Call) -> Option<(Vec3, Vec3, f32, f32)> {
 
 fn stack_of(c: &Call) -> Option<(f64, &StackInput)> {
     match c {
-        Call::RefractStack { theta_deg, stack } => Some((*theta_deg, stack)),
+        Call::refract_stack { theta_deg, stack } => Some((*theta_deg, stack)),
         _ => None,
     }
 }
@@ -183,7 +184,7 @@ pub const DOMAIN: &[Param] = &[
         "η_i/η_t",
         &["eta_i", "eta_t"],
         |c| match c {
-            Call::CriticalAngle { eta_i, eta_t } => Some(eta_i / eta_t),
+            Call::critical_angle { eta_i, eta_t } => Some(eta_i / eta_t),
             _ => None,
         },
     ),
@@ -256,7 +257,7 @@ fn random_refract(d: &mut Draw, aim: bool) -> CaseInput {
     let n = n * d.value(&DOMAIN[1]) as f32;
     let case = CaseInput::new(
         "",
-        Call::Refract {
+        Call::refract {
             wi,
             n,
             eta_i,
@@ -297,7 +298,7 @@ fn random_stack(d: &mut Draw, aim: bool) -> CaseInput {
     }
     CaseInput::new(
         "",
-        Call::RefractStack {
+        Call::refract_stack {
             theta_deg,
             stack: st,
         },
@@ -315,7 +316,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
                 let (eta_i, eta_t) = eta_pair(&mut d, &DOMAIN[4], ETA);
                 CaseInput::new(
                     "",
-                    Call::CriticalAngle {
+                    Call::critical_angle {
                         eta_i: eta_i as f64,
                         eta_t: eta_t as f64,
                     },

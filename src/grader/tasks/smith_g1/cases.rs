@@ -15,7 +15,7 @@ fn at_degrees(deg: f32) -> Vec3 {
 }
 
 pub fn fixed() -> Vec<CaseInput> {
-    let g1 = |name: &str, w: Vec3, alpha: f32| CaseInput::new(name, Call::SmithG1 { w, alpha });
+    let g1 = |name: &str, w: Vec3, alpha: f32| CaseInput::new(name, Call::smith_g1 { w, alpha });
     vec![
         g1("normal incidence", Vec3::Z, 0.5).note(G1),
         g1("errata §3.2.1: α = 0.5, θ = 85°", at_degrees(85.0), 0.5).note(G1),
@@ -35,11 +35,11 @@ pub fn fixed() -> Vec<CaseInput> {
 /// returns 0), `alpha` from 0 (a mirror, still finite) to 1 and beyond (very rough).
 pub const DOMAIN: &[Param] = &[
     cosine("smith_g1", "cos θ of w", &["w"], |c| match c {
-        Call::SmithG1 { w, .. } => Some(cos_z(*w)),
+        Call::smith_g1 { w, .. } => Some(cos_z(*w)),
         _ => None,
     }),
     roughness("smith_g1", "alpha", &["alpha"], |c| match c {
-        Call::SmithG1 { alpha, .. } => Some(*alpha as f64),
+        Call::smith_g1 { alpha, .. } => Some(*alpha as f64),
         _ => None,
     }),
 ];
@@ -51,7 +51,7 @@ pub fn random(s: &mut Sampler, count: usize) -> Vec<CaseInput> {
             let cos = d.value(&DOMAIN[0]);
             let w = d.direction_at(Vec3::Z, cos);
             let alpha = d.value(&DOMAIN[1]) as f32;
-            let case = CaseInput::new("", Call::SmithG1 { w, alpha });
+            let case = CaseInput::new("", Call::smith_g1 { w, alpha });
             if w.z <= 0.0 {
                 case.note(BACK)
             } else {

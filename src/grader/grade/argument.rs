@@ -1,0 +1,363 @@
+//! How each parameter type of the task functions is stored in a case, handed to the
+//! function, shown in a message, moved within rounding and probed: what lets [`Call`] and
+//! the probe be generated from the task signatures alone
+//! ([`for_each_task_function!`](crate::for_each_task_function)).
+//!
+//! [`Argument`] is implemented on the function-pointer type `fn(T)` of each parameter type
+//! `T` that a signature uses: a pointer type spells a borrowed parameter (`&LayerStack`)
+//! without a lifetime, which a stored field could not. A new task whose parameters have
+//! types listed here needs nothing in this file; a new parameter type needs its impl.
+//!
+//! [`Call`]: super::call::Call
+
+use super::rounding::Jitter;
+use super::test_brdf::TestBrdf;
+use crate::bsdf::{KajiyaKayParams, PhongParams};
+use crate::geometry::{Hit, Ray};
+use crate::integrator::{Heuristic, Segment};
+use crate::medium::{Coefficients, Homogeneous, Medium};
+use crate::optics::{LayerStack, Slab};
+use crate::sampling::Sampler;
+use crate::scene::{LoadOptions, Scene};
+use glam::{Vec2, Vec3};
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+use std::fmt::Debug;
+use std::path::Path;
+
+/// A parameter type `T` of a task function, implemented on `fn(T)`.
+pub trait Argument {
+    /// The parameter as a case stores it ([`Unstorable`] for one no value case can hold:
+    /// a scene, a hit, a medium).
+    type Stored: Clone + Debug + PartialEq + Serialize + DeserializeOwned;
+    /// What the call owns while the function borrows it.
+    type Owned;
+    /// The parameter as the function takes it, borrowed from [`Argument::Owned`].
+    type Lent<'a>;
+    /// The owned value of a stored one.
+    fn owned(stored: &Self::Stored) -> Self::Owned;
+    /// The argument, lent from `owned`.
+    fn lend(owned: &mut Self::Owned) -> Self::Lent<'_>;
+    /// An ordinary value for the probe ([`super::probe::probe_task`]): every task
+    /// function called on these returns, calling no other task's function.
+    fn probe() -> Self::Owned;
+    /// The stored value as a student can paste it into a test (`0.99999994`).
+    fn show(stored: &Self::Stored) -> String;
+    /// Moves every real number of `stored` within rounding ([`super::jitter`]).
+    fn jitter(_stored: &mut Self::Stored, _seed: u64) {}
+    /// Draws the value's random numbers from the `k`-th other stream; false when it draws
+    /// none.
+    fn reseed(_stored: &mut Self::Stored, _k: u64) -> bool {
+        false
+    }
+    /// The value as a direction that [`super::call::Call::jitters`] may turn, when it is
+    /// a vector.
+    fn vector(_stored: &mut Self::Stored) -> Option<&mut Vec3> {
+        None
+    }
+}
+
+/// The stored form of a parameter no value case holds (a scene, a hit, a medium): no value
+/// of it exists, so a call of a function that takes one cannot be built. Such tasks are
+/// judged by their estimators.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Unstorable {}
+
+/// An argument passed by value: stored as it is.
+macro_rules! by_value {
+    ($($ty:ty => probe $probe:expr, show $show:expr, jitter $jitter:expr;)+) => {$(
+        impl Argument for fn($ty) {
+            type Stored = $ty;
+            type Owned = $ty;
+            type Lent<'a> = $ty;
+            fn owned(stored: &$ty) -> $ty {
+                *stored
+            }
+            fn lend(owned: &mut $ty) -> $ty {
+                *owned
+            }
+            fn probe() -> $ty {
+                $probe
+            }
+            fn show(stored: &$ty) -> String {
+                ($show)(*stored)
+            }
+            fn jitter(stored: &mut $ty, seed: u64) {
+                ($jitter)(stored, seed)
+            }
+            fn vector(stored: &mut $ty) -> Option<&mut Vec3> {
+                (stored as &mut dyn std::any::Any).downcast_mut()
+            }
+        }
+    )+};
+}
+
+/// An argument passed by reference: stored as the value it refers to.
+macro_rules! by_reference {
+    ($($ty:ty => $target:ty, probe $probe:expr, show $show:expr;)+) => {$(
+        impl Argument for fn(&$ty) {
+            type Stored = $target;
+            type Owned = $target;
+            type Lent<'a> = &'a $target;
+            fn owned(stored: &$target) -> $target {
+                *stored
+            }
+            fn lend(owned: &mut $target) -> &$target {
+                owned
+            }
+            fn probe() -> $target {
+                $probe
+            }
+            fn show(stored: &$target) -> String {
+                ($show)(stored)
+            }
+            fn jitter(stored: &mut $target, seed: u64) {
+                stored.jitter(seed);
+            }
+        }
+    )+};
+}
+
+/// An argument no value case stores: a probe value only.
+macro_rules! unstorable {
+    ($($ty:ty => $owned:ty, lent $lent:ty, probe $probe:expr, lend |$o:ident| $lend:expr;)+) => {$(
+        impl Argument for fn($ty) {
+            type Stored = Unstorable;
+            type Owned = $owned;
+            type Lent<'a> = $lent;
+            fn owned(stored: &Unstorable) -> $owned {
+                match *stored {}
+            }
+            fn lend($o: &mut $owned) -> Self::Lent<'_> {
+                $lend
+            }
+            fn probe() -> $owned {
+                $probe
+            }
+            fn show(stored: &Unstorable) -> String {
+                match *stored {}
+            }
+        }
+    )+};
+}
+
+/// An ordinary unit direction, above the surface, off every axis.
+const PROBE_DIRECTION: Vec3 = Vec3::new(0.36, 0.48, 0.8);
+
+by_value! {
+    Vec3 => probe PROBE_DIRECTION, show exact_vec, jitter |v: &mut Vec3, s| v.jitter(s);
+    Vec2 => probe Vec2::new(0.3, 0.7),
+        show |v: Vec2| format!("({}, {})", n(v.x), n(v.y)),
+        jitter |v: &mut Vec2, s| v.jitter(s);
+    f32 => probe 0.5, show n, jitter |x: &mut f32, s| x.jitter(s);
+    f64 => probe 0.5, show n, jitter |x: &mut f64, s| x.jitter(s);
+    usize => probe 4, show |k: usize| k.to_string(), jitter |_: &mut usize, _| ();
+    u32 => probe 4, show |k: u32| k.to_string(), jitter |_: &mut u32, _| ();
+    i32 => probe 1, show |k: i32| k.to_string(), jitter |_: &mut i32, _| ();
+}
+
+by_reference! {
+    PhongParams => PhongParams,
+        probe PhongParams { kd: Vec3::splat(0.5), ks: Vec3::splat(0.4), exponent: 20.0 },
+        show |p: &PhongParams| format!(
+            "{{kd: {}, ks: {}, exponent: {}}}", exact_vec(p.kd), exact_vec(p.ks), n(p.exponent)
+        );
+    KajiyaKayParams => KajiyaKayParams,
+        probe KajiyaKayParams { kd: Vec3::splat(0.1), ks: Vec3::splat(0.9), exponent: 80.0 },
+        show |p: &KajiyaKayParams| format!(
+            "{{kd: {}, ks: {}, exponent: {}}}", exact_vec(p.kd), exact_vec(p.ks), n(p.exponent)
+        );
+}
+
+impl Argument for fn(&LayerStack) {
+    type Stored = StackInput;
+    type Owned = LayerStack;
+    type Lent<'a> = &'a LayerStack;
+    fn owned(stored: &StackInput) -> LayerStack {
+        stored.to_stack()
+    }
+    fn lend(owned: &mut LayerStack) -> &LayerStack {
+        owned
+    }
+    fn probe() -> LayerStack {
+        LayerStack {
+            eta_incident: 1.0,
+            slabs: vec![Slab {
+                eta: 1.5,
+                thickness: 10.0,
+            }],
+            eta_exit: 1.33,
+            intensity: 100.0,
+        }
+    }
+    fn show(stack: &StackInput) -> String {
+        let slabs: Vec<String> = stack
+            .slabs
+            .iter()
+            .map(|(eta, d)| format!("{} [d={}]", n(*eta), n(*d)))
+            .collect();
+        format!(
+            "{}→{}→{}, I={}",
+            n(stack.eta_incident),
+            slabs.join("→"),
+            n(stack.eta_exit),
+            n(stack.intensity)
+        )
+    }
+    fn jitter(stored: &mut StackInput, seed: u64) {
+        stored.jitter(seed);
+    }
+}
+
+/// A sampler is stored as its seed: the case draws the same numbers each time.
+impl Argument for fn(&mut Sampler) {
+    type Stored = u64;
+    type Owned = Sampler;
+    type Lent<'a> = &'a mut Sampler;
+    fn owned(seed: &u64) -> Sampler {
+        Sampler::new(*seed, 0)
+    }
+    fn lend(owned: &mut Sampler) -> &mut Sampler {
+        owned
+    }
+    fn probe() -> Sampler {
+        Sampler::new(0, 0)
+    }
+    fn show(seed: &u64) -> String {
+        format!("seed {seed}")
+    }
+    fn reseed(seed: &mut u64, k: u64) -> bool {
+        *seed = seed.wrapping_add(k.wrapping_mul(0x9e37_79b9_7f4a_7c15));
+        true
+    }
+}
+
+/// A BRDF closure is stored as one of the named [`TestBrdf`]s.
+impl Argument for fn(&dyn Fn(Vec3, Vec3) -> f32) {
+    type Stored = TestBrdf;
+    type Owned = Box<dyn Fn(Vec3, Vec3) -> f32>;
+    type Lent<'a> = &'a dyn Fn(Vec3, Vec3) -> f32;
+    fn owned(brdf: &TestBrdf) -> Self::Owned {
+        let brdf = *brdf;
+        Box::new(move |wi, wo| brdf.eval(wi, wo))
+    }
+    fn lend(owned: &mut Self::Owned) -> Self::Lent<'_> {
+        &**owned
+    }
+    fn probe() -> Self::Owned {
+        Box::new(|_, _| std::f32::consts::FRAC_1_PI)
+    }
+    fn show(brdf: &TestBrdf) -> String {
+        brdf.describe()
+    }
+    fn jitter(brdf: &mut TestBrdf, seed: u64) {
+        brdf.jitter(seed);
+    }
+}
+
+/// The floor of the probe scene, hit from above.
+fn probe_hit() -> Hit {
+    let ray = Ray::new(Vec3::new(0.0, 0.5, 0.3), -Vec3::Y);
+    probe_scene()
+        .intersect(&ray)
+        .expect("the probe ray hits the probe scene's floor")
+}
+
+unstorable! {
+    &Scene => Scene, lent &'a Scene, probe probe_scene(), lend |s| &*s;
+    // A camera ray that leaves the scene: written code returns the environment (black)
+    // without calling any other task.
+    &Segment => Segment, lent &'a Segment,
+        probe Segment {
+            ray: Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::Y),
+            hit: None,
+            emission_counted: false,
+        },
+        lend |s| &*s;
+    &Hit => Hit, lent &'a Hit, probe probe_hit(), lend |h| &*h;
+    &dyn Medium => Homogeneous, lent &'a dyn Medium,
+        probe Homogeneous { coefficients: Coefficients { sigma_a: 0.5, sigma_s: 0.5 } },
+        lend |m| &*m as &dyn Medium;
+    &Ray => Ray, lent &'a Ray, probe Ray::new(Vec3::ZERO, Vec3::Z), lend |r| &*r;
+    Heuristic => Heuristic, lent Heuristic, probe Heuristic::Power, lend |h| *h;
+}
+
+/// A [`LayerStack`] as stored in a case (the framework type is not deserialisable).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StackInput {
+    /// Index of the incident half-space.
+    pub eta_incident: f64,
+    /// `(eta, thickness)` of each slab in ray order.
+    pub slabs: Vec<(f64, f64)>,
+    /// Index of the exit half-space.
+    pub eta_exit: f64,
+    /// Incident intensity.
+    pub intensity: f64,
+}
+
+impl StackInput {
+    /// The framework's stack.
+    pub fn to_stack(&self) -> LayerStack {
+        LayerStack {
+            eta_incident: self.eta_incident,
+            slabs: self
+                .slabs
+                .iter()
+                .map(|&(eta, thickness)| Slab { eta, thickness })
+                .collect(),
+            eta_exit: self.eta_exit,
+            intensity: self.intensity,
+        }
+    }
+}
+
+impl Jitter for StackInput {
+    fn jitter(&mut self, seed: u64) {
+        self.eta_incident.jitter(seed);
+        for (eta, thickness) in &mut self.slabs {
+            eta.jitter(seed);
+            thickness.jitter(seed);
+        }
+        self.eta_exit.jitter(seed);
+        self.intensity.jitter(seed);
+    }
+}
+
+/// An input exactly as the function received it (the shortest text that reads back to the
+/// same number), so a student can paste a failing case into a test: `0.99999994`, `1e-7`.
+pub(super) fn n(x: impl Into<f64>) -> String {
+    let x: f64 = x.into();
+    if (x as f32) as f64 == x {
+        format!("{:?}", x as f32)
+    } else {
+        format!("{x:?}")
+    }
+}
+
+/// A vector input, exactly: `(0.6, -0.8, 0.0)`.
+pub(super) fn exact_vec(w: Vec3) -> String {
+    format!("({}, {}, {})", n(w.x), n(w.y), n(w.z))
+}
+
+/// A tiny scene for probing the integrator tasks: a floor lit by a small area light. Its
+/// floor samples directions uniformly (framework code), so probing `mis` calls no other
+/// task.
+pub const PROBE_SCENE: &str = "\
+camera: {eye: [0, 1, 3], target: [0, 0, 0], fov: 40, width: 4, height: 4}
+render: {spp: 1}
+materials:
+  floor: {diffuse: {albedo: 0.5, sampling: uniform}}
+shapes:
+  - quad: {origin: [-1, 0, 1], edge1: [2, 0, 0], edge2: [0, 0, -2], material: floor}
+  - quad: {origin: [-0.25, 1, -0.25], edge1: [0.5, 0, 0], edge2: [0, 0, 0.5], emission: 4}
+";
+
+/// The probe scene, built.
+pub fn probe_scene() -> Scene {
+    Scene::from_yaml(
+        Path::new("<probe scene>"),
+        PROBE_SCENE,
+        &LoadOptions::default(),
+    )
+    .expect("the built-in probe scene is valid (tests/instructor/render_scenes.rs checks it)")
+}
