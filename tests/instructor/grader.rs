@@ -269,7 +269,7 @@ fn failure_messages_name_the_case_input_and_cause() {
         &inputs[&TaskId::CookTorrance],
     );
     assert!(
-        messages(&checks).contains("every failing value is 4 ×"),
+        messages(&checks).contains(" 4 × the expected one — a constant factor"),
         "{}",
         messages(&checks)
     );

@@ -38,6 +38,7 @@ pub mod case;
 pub mod case_input;
 pub mod catalogue;
 pub mod checks;
+pub mod contract;
 pub mod credit;
 pub mod declared;
 pub mod domain;

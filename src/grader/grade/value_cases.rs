@@ -1,13 +1,14 @@
 //! The value cases of a task: its fixed cases and cases drawn from its declared domain
-//! (public ones with a fixed seed, hidden ones with the course's), evaluated on the
-//! reference into expected outputs with tolerances from the contract's conditioning, and
-//! the region of the domain each lies in. The grader's side: the expected outputs are made
+//! (public ones with a fixed seed, hidden ones with the course's), evaluated by the task's
+//! contract in f64 (or, where it has none, the reference) into expected outputs, with
+//! tolerances from the contract's conditioning and f32's arithmetic, and the region of the
+//! domain each lies in. The grader's side: the expected outputs are made
 //! here.
 
 use super::call::Call;
 use super::case::{Rule, ValueCase};
 use super::case_input::{CaseInput, PUBLIC_SEED};
-use super::catalogue::{domain, drawn, fixed};
+use super::catalogue::{contract, domain, drawn, fixed};
 use super::domain::Param;
 use super::output::{Output, fmt_num};
 use super::tolerance::Tolerance;
@@ -152,10 +153,43 @@ pub const OVERFLOW_RANGE: f64 = f32::MAX as f64 / 1_099_511_627_776.0;
 /// inputs move within rounding ([`Call::jitters`]).
 const CONDITIONING_SAMPLES: u64 = 6;
 
-/// The spread of `t`'s output over inputs moved within rounding, or `None` when such a move
-/// changes the output's shape (a `None` that becomes a value at a critical angle, a value
-/// that becomes non-finite) or panics: then correct f32 implementations may disagree on
-/// the shape itself.
+/// The contract's answer to `call` in f64 ([`contract`]), or, for a call no contract
+/// covers, `t`'s (the reference's); `Err` with the panic's description when `t` panics.
+fn answer(call: &Call, t: &impl Tasks) -> Result<Output, String> {
+    match contract(call) {
+        Some(out) => Ok(out),
+        None => panics::catch(|| call.eval(t)).map_err(|p| p.describe()),
+    }
+}
+
+/// How far a correct f32 implementation's answer to `call` may lie from `expected`, the
+/// contract's: `None` when correct implementations may disagree on the answer's shape
+/// (a `None` that becomes a value at a critical angle, a value that becomes non-finite).
+/// The largest of
+/// - the contract's **conditioning**: the spread of its answer over the inputs moved within
+///   rounding ([`spread`]): how far the answer moves when each input moves by what f32
+///   loses there;
+/// - the **f32 arithmetic** at the input, witnessed by `t` (the reference, one correct f32
+///   implementation): its own spread over the same moves, plus how far its answer lies
+///   from the contract's. Where f32 cannot hold an intermediate (a G1 of a subnormal
+///   cosine has a few significant bits) every f32 implementation is that far off, however
+///   exact its inputs.
+///
+/// For a call no contract covers, `expected` is the reference's and this is its spread.
+fn allowance(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
+    let by_reference = |c: &Call| panics::catch(|| c.eval(t)).ok();
+    if contract(call).is_none() {
+        return spread(call, expected, by_reference);
+    }
+    let reference = by_reference(call)?;
+    let deviation = reference.max_difference(expected)?;
+    let arithmetic = spread(call, &reference, by_reference)?;
+    let conditioning = spread(call, expected, contract)?;
+    Some(conditioning.max(arithmetic) + deviation / 2.0)
+}
+
+/// The spread of `answer` over inputs moved within rounding, around `centre`; `None`
+/// when a move changes the output's shape or `answer` gives none (a panic).
 ///
 /// Where the contract's answer on a boundary of its declared domain is exactly 0 (`h.z = 0`
 /// is "at or below the surface", so `D = 0`) and jumps there, an input that lies exactly
@@ -166,8 +200,8 @@ const CONDITIONING_SAMPLES: u64 = 6;
 /// contract's own steepness. (An input that only rounds onto a boundary,
 /// like a unit vector near the normal whose z is 1 in f32, has a non-zero answer there and
 /// keeps every move.)
-fn conditioning(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
-    let on: Vec<(&Param, f64)> = if is_zero(expected) {
+fn spread(call: &Call, centre: &Output, answer: impl Fn(&Call) -> Option<Output>) -> Option<f64> {
+    let on: Vec<(&Param, f64)> = if is_zero(centre) {
         domain(call.task())
             .iter()
             .filter_map(|p| {
@@ -182,8 +216,7 @@ fn conditioning(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
         .iter()
         .filter(|jittered| on.iter().all(|(p, v)| (p.value)(jittered) == Some(*v)))
         .try_fold(0f64, |spread, jittered| {
-            let out = panics::catch(|| jittered.eval(t)).ok()?;
-            Some(spread.max(out.max_difference(expected)?))
+            Some(spread.max(answer(jittered)?.max_difference(centre)?))
         })
 }
 
@@ -223,30 +256,34 @@ fn by_value_where_fixed(rule: Rule, call: &Call, expected: &Output, t: &impl Tas
     }
 }
 
-/// True when every number in `output` is exactly 0.
+/// True when every number in `output` is 0 as the student's f32 holds it: exactly 0, or
+/// an f64 answer of the contract that rounds to 0 in f32 (a density of 1e-65).
 fn is_zero(output: &Output) -> bool {
+    let zero = |x: f64| x as f32 == 0.0;
     match output {
         Output::Nothing => false,
-        Output::Number(x) => *x == 0.0,
-        Output::Numbers(v) => v.iter().all(|x| *x == 0.0),
+        Output::Number(x) => zero(*x),
+        Output::Numbers(v) => v.iter().all(|x| zero(*x)),
         Output::Record(fields) => fields.values().all(is_zero),
     }
 }
 
-/// Evaluates `inputs` on `t` (the reference) into cases with expected outputs. Fails when
-/// an output is NaN, or infinite in a fixed case (under a rule that compares numbers), or
-/// the code panics: expected data must be well defined. A drawn case whose answer comes
-/// within [`OVERFLOW_RANGE`] of overflowing f32 is left out.
+/// Evaluates `inputs` into cases with expected outputs: the answer of the task's contract
+/// in f64 at exactly the case's inputs, or, for a call no contract covers, of `t` (the
+/// reference). Fails when an output is NaN, or infinite in a fixed case (under a rule that
+/// compares numbers), or the reference panics: expected data must be well defined. A drawn
+/// case whose answer comes within [`OVERFLOW_RANGE`] of overflowing f32 is left out.
 ///
-/// A case compared by a tolerance gets that tolerance widened by twice the spread of the
-/// reference's answer over inputs moved by a few ulps: near a singularity (a tiny roughness
-/// with `h` near the normal, the grazing limit of `cos θt`) a correct implementation that
+/// A case compared by a tolerance gets that tolerance (the task's allowance for the last
+/// digits) widened by twice how far a correct f32 answer may lie from the expected one
+/// (`allowance`): near a singularity (a tiny roughness with `h` near the normal, the
+/// grazing limit of `cos θt`, a direction along a fibre) a correct f32 implementation that
 /// rounds differently is as far off as that, and a wrong one much further. A drawn case
 /// whose shape changes within rounding (`refract` on the critical angle) is dropped.
 pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<ValueCase>> {
     let mut cases = Vec::with_capacity(inputs.len());
     for input in inputs {
-        let expected = match panics::catch(|| input.call.eval(t)) {
+        let expected = match answer(&input.call, t) {
             // A drawn combination of special values where the answer lies at the edge of
             // f32's range or beyond (a mirror, which no masking bounds, at a subnormal
             // grazing cosine: 1/cos θ alone is 8.5e37) is a singularity of the contract,
@@ -265,15 +302,10 @@ pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<Valu
                 input.call,
                 input.name
             ),
-            Err(p) => bail!(
-                "{} [{}]: the reference {}",
-                input.call,
-                input.name,
-                p.describe()
-            ),
+            Err(panic) => bail!("{} [{}]: the reference {panic}", input.call, input.name),
         };
         let rule = match input.rule {
-            Rule::Close(tol) => match conditioning(&input.call, &expected, t) {
+            Rule::Close(tol) => match allowance(&input.call, &expected, t) {
                 Some(spread) => Rule::Close(Tolerance::new(tol.abs + 2.0 * spread, tol.rel)),
                 None if input.drawn => continue,
                 None => input.rule,

@@ -130,9 +130,14 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
             failing_regions.join(", ")
         );
     }
-    if let Some(factor) = common_factor(&ratios) {
+    if let Some((factor, shared)) = common_factor(&ratios) {
+        let which = if shared == ratios.len() {
+            "every failing value is".to_string()
+        } else {
+            format!("{shared} of {} failing values are", ratios.len())
+        };
         result.summary += &format!(
-            "; every failing value is {} × the expected one — a constant factor is missing or extra",
+            "; {which} {} × the expected one — a constant factor is missing or extra",
             fmt_num(factor)
         );
     }
@@ -190,15 +195,20 @@ fn ratios_of(got: &Output, expected: &Output) -> Vec<f64> {
         .collect()
 }
 
-/// The factor shared by all ratios (to 0.1 %), when there are at least three and it is not 1.
-fn common_factor(ratios: &[f64]) -> Option<f64> {
-    let first = *ratios.first()?;
-    let shared = ratios.len() >= 3
-        && first.is_finite()
-        && ratios
-            .iter()
-            .all(|r| (r - first).abs() <= 1e-3 * first.abs());
-    (shared && (first - 1.0).abs() > 1e-2).then_some(first)
+/// The factor that nine in ten of the failing values' ratios to the expected ones share
+/// (their median, to 0.1 %), with how many share it: when at least three do and it is not 1.
+fn common_factor(ratios: &[f64]) -> Option<(f64, usize)> {
+    let mut sorted: Vec<f64> = ratios.iter().copied().filter(|r| r.is_finite()).collect();
+    sorted.sort_by(f64::total_cmp);
+    let median = *sorted.get(sorted.len() / 2)?;
+    let shared = ratios
+        .iter()
+        .filter(|r| (*r - median).abs() <= 1e-3 * median.abs())
+        .count();
+    // Nine in ten: an f32 implementation off by a factor is off by a little more where
+    // its own rounding is coarse (a subnormal cosine), and the expected value is exact.
+    let common = shared >= 3 && shared * 10 >= ratios.len() * 9;
+    (common && (median - 1.0).abs() > 1e-2).then_some((median, shared))
 }
 
 #[cfg(test)]
@@ -207,9 +217,13 @@ mod tests {
 
     #[test]
     fn a_constant_factor_is_diagnosed() {
-        assert_eq!(common_factor(&[4.0, 4.0, 4.000_01]), Some(4.0));
+        assert_eq!(common_factor(&[4.0, 4.0, 4.000_01]), Some((4.0, 3)));
         assert_eq!(common_factor(&[4.0, 4.0]), None);
         assert_eq!(common_factor(&[4.0, 2.0, 4.0]), None);
         assert_eq!(common_factor(&[1.0, 1.0, 1.0]), None);
+        let mostly: Vec<f64> = [4.0; 9].into_iter().chain([4.2]).collect();
+        assert_eq!(common_factor(&mostly), Some((4.0, 9)));
+        let half: Vec<f64> = [4.0; 5].into_iter().chain([2.0; 5]).collect();
+        assert_eq!(common_factor(&half), None);
     }
 }

@@ -37,7 +37,7 @@ fn is_instructor_only(file: &Path) -> bool {
     let parts: Vec<_> = file.components().map(|c| c.as_os_str()).collect();
     matches!(parts.as_slice(), [src, grader, tasks, _, name]
         if *src == "src" && *grader == "grader" && *tasks == "tasks"
-            && (*name == "variants.rs" || *name == "library.rs"))
+            && (*name == "variants.rs" || *name == "library.rs" || *name == "contract.rs"))
 }
 
 /// The members' manifests that name the reference, rewritten as the root's is: the

@@ -3,6 +3,8 @@
 //!   (the worksheet's examples, the errata's traps) and random cases drawn from the domain;
 //!   for a sampler its setups, for an estimator task its estimators, their `POWER` and
 //!   variance pairs;
+//! - `contract.rs` (a task judged by value): its contract in f64, the expected output of
+//!   its value cases (see [`crate::grade::contract`]); left out of the handout;
 //! - `stability.rs`: its stiff and extreme inputs, with the value or limit each must take
 //!   (the grader's stability check, and `pbrlab stability`);
 //! - `variants.rs`: the implementations the tests grade the grader with: known-wrong ones
@@ -28,7 +30,8 @@
 /// per task: `Variant => module { what its cases.rs declares }`, where `Variant` is the
 /// task's [`TaskId`](crate::worksheet::TaskId) and `module` its folder under `src/grader/tasks/`.
 /// The items are those of the grader's catalogue (`DOMAIN`, `POWER`, `fixed`, `random`,
-/// `setups`, `estimators`, `variance_pairs`); what a file does not declare is empty.
+/// `setups`, `estimators`, `variance_pairs` from `cases.rs`, and `contract` from
+/// `contract.rs`); what a task does not declare is empty.
 ///
 /// Adding a task adds its line here (and its `TaskId`); the registries' matches over
 /// `TaskId` are exhaustive, so a task left out does not compile.
@@ -36,23 +39,34 @@
 macro_rules! for_each_task {
     ($callback:ident) => {
         $callback! {
-            Reflect => reflect { DOMAIN, fixed, random },
-            RefractStack => refract_stack { DOMAIN, fixed, random },
-            FresnelSchlick => fresnel_schlick { DOMAIN, fixed, random },
-            CosineSample => cosine_sample { DOMAIN, POWER, fixed, random, setups, estimators },
-            SmithG1 => smith_g1 { DOMAIN, fixed, random },
-            CookTorrance => cook_torrance { DOMAIN, fixed, random },
-            AnisoNdf => aniso_ndf { DOMAIN, POWER, fixed, random, estimators },
-            Phong => phong { DOMAIN, fixed, random },
-            KajiyaKay => kajiya_kay { DOMAIN, fixed, random },
-            BeckmannNdf => beckmann_ndf { DOMAIN, POWER, fixed, random, estimators },
-            NdfSample => ndf_sample { DOMAIN, POWER, fixed, random, setups, estimators },
+            Reflect => reflect { DOMAIN, fixed, random, contract },
+            RefractStack => refract_stack { DOMAIN, fixed, random, contract },
+            FresnelSchlick => fresnel_schlick { DOMAIN, fixed, random, contract },
+            CosineSample => cosine_sample { DOMAIN, POWER, fixed, random, setups, estimators, contract },
+            SmithG1 => smith_g1 { DOMAIN, fixed, random, contract },
+            CookTorrance => cook_torrance { DOMAIN, fixed, random, contract },
+            AnisoNdf => aniso_ndf { DOMAIN, POWER, fixed, random, estimators, contract },
+            Phong => phong { DOMAIN, fixed, random, contract },
+            KajiyaKay => kajiya_kay { DOMAIN, fixed, random, contract },
+            BeckmannNdf => beckmann_ndf { DOMAIN, POWER, fixed, random, estimators, contract },
+            NdfSample => ndf_sample { DOMAIN, POWER, fixed, random, setups, estimators, contract },
             BrdfCheck => brdf_check { DOMAIN, fixed, random },
             PathTrace => path_trace { POWER, estimators },
             Mis => mis { POWER, estimators, variance_pairs },
             DeltaTracking => delta_tracking { POWER, estimators },
         }
     };
+}
+
+/// The file of an item a task's line lists beyond its `cases.rs`: `contract` is
+/// `contract.rs`, which writes the answer out and so exists in the instructor's build only
+/// (the handout leaves it out, like the reference).
+macro_rules! task_file {
+    (contract) => {
+        #[cfg(feature = "solutions")]
+        pub(crate) mod contract;
+    };
+    ($item:ident) => {};
 }
 
 /// Declares each task's folder as a module with its `cases` and `stability`, and checks at
@@ -78,6 +92,7 @@ macro_rules! task_modules {
             pub mod $module {
                 pub(crate) mod cases;
                 pub(crate) mod stability;
+                $(task_file!($item);)*
             }
         )*
     };

@@ -13,10 +13,11 @@ pub(crate) mod rough_conductor;
 
 pub use rough_conductor::StoredQuadrature;
 
-use super::call::SampleCall;
+use super::call::{Call, SampleCall};
 use super::case_input::CaseInput;
 use super::domain::Param;
 use super::estimator::EstimatorSpec;
+use super::output::Output;
 use super::variance_pair::VariancePair;
 use crate::sampling::Sampler;
 use crate::worksheet::{TaskId, Tasks};
@@ -49,6 +50,10 @@ trait TaskCatalogue {
     /// Estimator pairs whose variances must relate as each pair's bound says.
     fn variance_pairs<T: Tasks>(_t: &T) -> Vec<VariancePair<'_>> {
         Vec::new()
+    }
+    /// The contract's answer to a call in f64 (see [`super::contract`]).
+    fn contract(_call: &Call) -> Option<Output> {
+        None
     }
 }
 
@@ -83,6 +88,12 @@ macro_rules! catalogue_item {
     ($m:ident, variance_pairs) => {
         fn variance_pairs<T: Tasks>(t: &T) -> Vec<VariancePair<'_>> {
             $m::variance_pairs(t)
+        }
+    };
+    ($m:ident, contract) => {
+        #[cfg(feature = "solutions")]
+        fn contract(call: &Call) -> Option<Output> {
+            crate::tasks::$m::contract::expected(call)
         }
     };
 }
@@ -129,6 +140,11 @@ macro_rules! registry {
         fn variance_pairs_of<T: Tasks>(task: TaskId, t: &T) -> Vec<VariancePair<'_>> {
             match task {
                 $(TaskId::$variant => <entries::$variant as TaskCatalogue>::variance_pairs(t),)*
+            }
+        }
+        fn contract_of(call: &Call) -> Option<Output> {
+            match call.task() {
+                $(TaskId::$variant => <entries::$variant as TaskCatalogue>::contract(call),)*
             }
         }
     };
@@ -184,4 +200,11 @@ pub fn declared_power(task: TaskId) -> Option<crate::grade::declared::Declared> 
 /// (see [`super::variance_pair`]).
 pub fn variance_pairs<T: Tasks>(task: TaskId, t: &T) -> Vec<VariancePair<'_>> {
     variance_pairs_of(task, t)
+}
+
+/// The answer of the contract of `call`'s task in f64, at exactly its inputs (see
+/// [`super::contract`]); `None` where the task's `contract.rs` covers no such call, and
+/// always in the handout, which has no contracts (nor a reference to evaluate cases with).
+pub fn contract(call: &Call) -> Option<Output> {
+    contract_of(call)
 }
