@@ -22,6 +22,8 @@
 //!   `(1 − cos θ)^5` (0.385 at 80°). Return 0.
 //! - A cosine that rounding pushed to `1 + 1e-7` is normal incidence; `1 − cos θ` must not
 //!   go negative.
+//! - Indices run from 1 (vacuum) to 4 (germanium), either way round: a ratio `eta_i/eta_t`
+//!   from 1/4 to 4, and equal.
 //!
 //! ## What the worksheet gets wrong
 //! Its glass/water `R0` is printed as 0.0041; `(0.17/2.83)² = 0.0036085`. Its Schlick value

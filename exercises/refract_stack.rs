@@ -23,6 +23,8 @@
 //!   indices), and neither is a critical angle: return `None`.
 //! - `n` may have any non-zero length, also within 1e-3 of 1: normalise it always.
 //! - Incident cosines go down to the smallest positive f32 (`1e-45`, a subnormal).
+//! - Indices run from 1 (vacuum) to 4 (germanium), either way round: a ratio `eta_i/eta_t`
+//!   from 1/4 to 4.
 //!
 //! ## The layer stack
 //! In a stack of parallel layers the product `eta sin θ` is the same in every medium, so every

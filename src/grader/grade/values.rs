@@ -112,7 +112,7 @@ pub fn judge(cases: &[ValueCase], outputs: &ValueOutputs, visibility: Visibility
     result.finish();
     result.worst = worst;
     result.summary = format!(
-        "{}/{} cases agree with the reference",
+        "{}/{} cases agree with the expected answers",
         result.total - result.failed,
         result.total
     );

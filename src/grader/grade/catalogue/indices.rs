@@ -4,8 +4,10 @@
 use crate::grade::call::Call;
 use crate::grade::domain::{Boundary, Draw, Param, Spread};
 
-/// Indices of refraction the grader draws: air to diamond.
-pub const ETA: (f64, f64) = (1.0, 2.42);
+/// Indices of refraction the grader draws, as the exercise texts state them: vacuum to
+/// germanium (its index in the infrared, the highest of common optical materials), so
+/// ratios far from 1 (1/4 and 4) are drawn as well as near 1.
+pub const ETA: (f64, f64) = (1.0, 4.0);
 
 /// A ratio of two indices drawn from [`ETA`], `η_i/η_t` (or of neighbours), with equal
 /// indices (no interface) as its boundary.

@@ -94,8 +94,8 @@ pub fn fixed() -> Vec<CaseInput> {
 }
 
 /// The declared domain of `schlick_r0(eta_i, eta_t)` and
-/// `fresnel_schlick(cos_theta_i, eta_i, eta_t)`: indices from air to diamond, either way
-/// round and equal; a cosine in [0, 1] that rounding may push to `1 + 1e-7`; the critical
+/// `fresnel_schlick(cos_theta_i, eta_i, eta_t)`: indices from vacuum to germanium (1 to 4),
+/// either way round and equal; a cosine in [0, 1] that rounding may push to `1 + 1e-7`; the critical
 /// angle when going to a less dense medium.
 pub const DOMAIN: &[Param] = &[
     index_ratio("schlick_r0", "η_i/η_t", &["eta_i", "eta_t"], |c| match c {

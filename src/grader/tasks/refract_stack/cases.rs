@@ -163,8 +163,8 @@ fn nearest_equal(stack: &StackInput) -> f64 {
 
 /// The declared domain of `refract(wi, n, eta_i, eta_t)`, `critical_angle(eta_i, eta_t)`
 /// and `refract_stack(theta_deg, stack)`: `wi` on the side `n` points to, `n` of any
-/// non-zero length, indices from air to diamond either way round and equal; total internal
-/// reflection from the critical angle on (`sin²θt ≥ 1`); stacks of zero or more slabs of
+/// non-zero length, indices from vacuum to germanium (1 to 4) either way round and equal;
+/// total internal reflection from the critical angle on (`sin²θt ≥ 1`); stacks of zero or more slabs of
 /// any finite thickness, at incidence from the normal to grazing, of any intensity.
 pub const DOMAIN: &[Param] = &[
     upper_cosine("refract", "cos(wi, n)", &["wi", "n"], |c| {
