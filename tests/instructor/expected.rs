@@ -1,11 +1,13 @@
 //! Instructor test: the grader's stored expected data (src/grader/tasks/<task>/expected.snap)
-//! is what the reference computes today.
+//! is what the grader computes today (each task's contract in f64, the reference where a
+//! task has none).
 //!
-//! Each task's data is generated from the reference and compared with the stored snapshot by
-//! a tolerance comparator (rounding may differ between machines; a real change may not).
-//! After a deliberate change to the reference or to the graded cases, accept the new data
-//! with `INSTA_UPDATE=always cargo test --release --test instructor expected::` and commit the
-//! snapshots: `build.rs` embeds them in the grader. Not part of the student handout.
+//! Each task's data is generated as the grader generates it and compared with the stored
+//! snapshot by a tolerance comparator (rounding may differ between machines; a real change
+//! may not). After a deliberate change to a contract, the reference or the graded cases,
+//! accept the new data with `INSTA_UPDATE=always cargo test --release --test instructor
+//! expected::` and commit the snapshots: `build.rs` embeds them in the grader. Not part of
+//! the student handout.
 
 use insta::internals::SnapshotContents;
 use insta::{Comparator, Snapshot};
@@ -39,7 +41,7 @@ impl Comparator for TolerantJson {
 }
 
 #[test]
-fn stored_expected_data_is_the_references() {
+fn stored_expected_data_is_what_the_grader_computes_today() {
     install();
     let mut settings = insta::Settings::clone_current();
     settings.set_prepend_module_to_snapshot(false);

@@ -92,26 +92,26 @@ macro_rules! by_value {
     )+};
 }
 
-/// An argument passed by reference: stored as the value it refers to.
+/// An argument passed by reference to a plain value: stored as the value it refers to.
 macro_rules! by_reference {
-    ($($ty:ty => $target:ty, probe $probe:expr, show $show:expr;)+) => {$(
+    ($($ty:ty => probe $probe:expr, show $show:expr;)+) => {$(
         impl Argument for fn(&$ty) {
-            type Stored = $target;
-            type Owned = $target;
-            type Lent<'a> = &'a $target;
-            fn owned(stored: &$target) -> $target {
+            type Stored = $ty;
+            type Owned = $ty;
+            type Lent<'a> = &'a $ty;
+            fn owned(stored: &$ty) -> $ty {
                 *stored
             }
-            fn lend(owned: &mut $target) -> &$target {
+            fn lend(owned: &mut $ty) -> &$ty {
                 owned
             }
-            fn probe() -> $target {
+            fn probe() -> $ty {
                 $probe
             }
-            fn show(stored: &$target) -> String {
+            fn show(stored: &$ty) -> String {
                 ($show)(stored)
             }
-            fn jitter(stored: &mut $target, seed: u64) {
+            fn jitter(stored: &mut $ty, seed: u64) {
                 stored.jitter(seed);
             }
         }
@@ -157,12 +157,12 @@ by_value! {
 }
 
 by_reference! {
-    PhongParams => PhongParams,
+    PhongParams =>
         probe PhongParams { kd: Vec3::splat(0.5), ks: Vec3::splat(0.4), exponent: 20.0 },
         show |p: &PhongParams| format!(
             "{{kd: {}, ks: {}, exponent: {}}}", exact_vec(p.kd), exact_vec(p.ks), n(p.exponent)
         );
-    KajiyaKayParams => KajiyaKayParams,
+    KajiyaKayParams =>
         probe KajiyaKayParams { kd: Vec3::splat(0.1), ks: Vec3::splat(0.9), exponent: 80.0 },
         show |p: &KajiyaKayParams| format!(
             "{{kd: {}, ks: {}, exponent: {}}}", exact_vec(p.kd), exact_vec(p.ks), n(p.exponent)

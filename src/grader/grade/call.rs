@@ -301,7 +301,7 @@ impl fmt::Display for SampleCall {
                 alpha_y,
             } => write!(
                 f,
-                "ndf_sample(wo={}, αx={}, αy={})",
+                "ndf_sample(wo={}, alpha_x={}, alpha_y={})",
                 fmt_vec(*wo),
                 n(*alpha_x),
                 n(*alpha_y)

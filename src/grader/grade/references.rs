@@ -57,22 +57,22 @@ pub fn for_spec(spec: &ImplSpec) -> anyhow::Result<BTreeMap<String, PathBuf>> {
 /// here, the handout's whole compiled reference): `pbrlab-reference` in the framework's
 /// selection ([`FRAMEWORK_SELECTION`]), so that features resolve as in the instructor's own
 /// build and the libraries link the framework its binaries link (one compilation of it).
-pub const SELECTION: &[&str] = &[
-    FRAMEWORK_SELECTION[0],
-    FRAMEWORK_SELECTION[1],
-    FRAMEWORK_SELECTION[2],
-    FRAMEWORK_SELECTION[3],
-    "-p",
-    "pbrlab-reference",
-];
+pub fn selection() -> Vec<&'static str> {
+    let reference = ["-p", "pbrlab-reference"];
+    FRAMEWORK_SELECTION
+        .iter()
+        .copied()
+        .chain(reference)
+        .collect()
+}
 
 /// The arguments of `cargo` that build the one-task libraries (add `--release` for the
-/// release profile): [`SELECTION`], every example, and without the dependencies' debug
+/// release profile): [`selection`], every example, and without the dependencies' debug
 /// information (1 MB each instead of 58 MB). The autograder packages' set-up runs the same
 /// command.
 pub fn cargo_args() -> Vec<&'static str> {
     let mut args = vec!["build", "--locked"];
-    args.extend(SELECTION);
+    args.extend(selection());
     args.extend([
         "--examples",
         "--config",

@@ -68,7 +68,7 @@ impl HemisphereBins {
 /// The reference's distribution of one sampler setup, as stored in the expected data.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SamplingTarget {
-    /// The setup, for messages: `cosine_sample`, `ndf_sample wo=(…) αx=0.3 αy=0.3`.
+    /// The setup, for messages: `cosine_sample`, `ndf_sample(wo=(…), alpha_x=0.3, alpha_y=0.3)`.
     pub name: String,
     /// The cells.
     pub bins: HemisphereBins,

@@ -127,14 +127,10 @@ pub const SOURCE_CHECK: &str = "PBRLAB_SOURCE_CHECK";
 /// [`StudentBuild::commands`], `pbrlab-student` beside it), in the framework's selection
 /// ([`FRAMEWORK_SELECTION`]), so it links the one compilation of the framework that
 /// `pbrlab-commands` links.
-pub const WORKER_SELECTION: &[&str] = &[
-    FRAMEWORK_SELECTION[0],
-    FRAMEWORK_SELECTION[1],
-    FRAMEWORK_SELECTION[2],
-    FRAMEWORK_SELECTION[3],
-    "--bin",
-    super::isolation::WORKER_BINARY,
-];
+pub fn worker_selection() -> Vec<&'static str> {
+    let worker = ["--bin", super::isolation::WORKER_BINARY];
+    FRAMEWORK_SELECTION.iter().copied().chain(worker).collect()
+}
 
 /// The most compiler output kept from one build, in bytes (beyond [`MAX_MESSAGE`] per task).
 const MAX_OUTPUT: usize = 64 << 10;
@@ -337,7 +333,7 @@ impl StudentBuild<'_> {
     fn cargo_args(&self, offline: bool) -> Vec<String> {
         let mut args: Vec<String> = ["build", "--release", "--message-format=json"]
             .into_iter()
-            .chain(WORKER_SELECTION.iter().copied())
+            .chain(worker_selection())
             .map(String::from)
             .collect();
         if self.commands {

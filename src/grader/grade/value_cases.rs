@@ -178,18 +178,20 @@ fn answer(call: &Call, t: &impl Tasks) -> Result<Output, String> {
 /// For a call no contract covers, `expected` is the reference's and this is its spread.
 fn allowance(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
     let by_reference = |c: &Call| panics::catch(|| c.eval(t)).ok();
+    let jittered = call.jitters(CONDITIONING_SAMPLES);
     if contract(call).is_none() {
-        return spread(call, expected, by_reference);
+        return spread(call, &jittered, expected, by_reference);
     }
     let reference = by_reference(call)?;
     let deviation = reference.max_difference(expected)?;
-    let arithmetic = spread(call, &reference, by_reference)?;
-    let conditioning = spread(call, expected, contract)?;
+    let arithmetic = spread(call, &jittered, &reference, by_reference)?;
+    let conditioning = spread(call, &jittered, expected, contract)?;
     Some(conditioning.max(arithmetic) + deviation / 2.0)
 }
 
-/// The spread of `answer` over inputs moved within rounding, around `centre`; `None`
-/// when a move changes the output's shape or `answer` gives none (a panic).
+/// The spread of `answer` over `jittered` (the inputs of `call` moved within rounding,
+/// [`Call::jitters`]), around `centre`; `None` when a move changes the output's shape or
+/// `answer` gives none (a panic).
 ///
 /// Where the contract's answer on a boundary of its declared domain is exactly 0 (`h.z = 0`
 /// is "at or below the surface", so `D = 0`) and jumps there, an input that lies exactly
@@ -200,7 +202,12 @@ fn allowance(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
 /// contract's own steepness. (An input that only rounds onto a boundary,
 /// like a unit vector near the normal whose z is 1 in f32, has a non-zero answer there and
 /// keeps every move.)
-fn spread(call: &Call, centre: &Output, answer: impl Fn(&Call) -> Option<Output>) -> Option<f64> {
+fn spread(
+    call: &Call,
+    jittered: &[Call],
+    centre: &Output,
+    answer: impl Fn(&Call) -> Option<Output>,
+) -> Option<f64> {
     let on: Vec<(&Param, f64)> = if is_zero(centre) {
         domain(call.task())
             .iter()
@@ -212,11 +219,11 @@ fn spread(call: &Call, centre: &Output, answer: impl Fn(&Call) -> Option<Output>
     } else {
         Vec::new()
     };
-    call.jitters(CONDITIONING_SAMPLES)
+    jittered
         .iter()
-        .filter(|jittered| on.iter().all(|(p, v)| (p.value)(jittered) == Some(*v)))
-        .try_fold(0f64, |spread, jittered| {
-            Some(spread.max(answer(jittered)?.max_difference(centre)?))
+        .filter(|moved| on.iter().all(|(p, v)| (p.value)(moved) == Some(*v)))
+        .try_fold(0f64, |spread, moved| {
+            Some(spread.max(answer(moved)?.max_difference(centre)?))
         })
 }
 

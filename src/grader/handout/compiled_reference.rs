@@ -21,7 +21,7 @@ pub fn build(root: &Path, dest: &Path) -> anyhow::Result<PathBuf> {
     let status = Command::new(&cargo)
         .current_dir(root)
         .args(["build", "--release", "--locked", "--lib"])
-        .args(crate::grade::references::SELECTION)
+        .args(crate::grade::references::selection())
         .args([
             "--config",
             "profile.release.package.pbrlab-reference.strip=\"symbols\"",
