@@ -25,22 +25,29 @@ use serde::{Deserialize, Serialize};
 use std::fmt::Debug;
 use std::path::Path;
 
-/// A parameter type `T` of a task function, implemented on `fn(T)`.
-pub trait Argument {
-    /// The parameter as a case stores it ([`Unstorable`] for one no value case can hold:
-    /// a scene, a hit, a medium).
-    type Stored: Clone + Debug + PartialEq + Serialize + DeserializeOwned;
+/// A parameter type `T` of a task function, implemented on `fn(T)`: how a call owns the
+/// value and lends it to the function, and its ordinary value for the probe. Every
+/// parameter type of every task has one.
+pub trait Probe {
     /// What the call owns while the function borrows it.
     type Owned;
-    /// The parameter as the function takes it, borrowed from [`Argument::Owned`].
+    /// The parameter as the function takes it, borrowed from [`Probe::Owned`].
     type Lent<'a>;
-    /// The owned value of a stored one.
-    fn owned(stored: &Self::Stored) -> Self::Owned;
     /// The argument, lent from `owned`.
     fn lend(owned: &mut Self::Owned) -> Self::Lent<'_>;
     /// An ordinary value for the probe ([`super::probe::probe_task`]): every task
     /// function called on these returns, calling no other task's function.
     fn probe() -> Self::Owned;
+}
+
+/// A parameter type that a value case stores ([`super::call::Call`]): every parameter type
+/// of the tasks judged by value. (A scene, a hit or a medium is a [`Probe`] only: their
+/// tasks are judged by estimators.)
+pub trait Argument: Probe {
+    /// The parameter as a case stores it.
+    type Stored: Clone + Debug + PartialEq + Serialize + DeserializeOwned;
+    /// The owned value of a stored one.
+    fn owned(stored: &Self::Stored) -> Self::Owned;
     /// The stored value as a student can paste it into a test (`0.99999994`).
     fn show(stored: &Self::Stored) -> String;
     /// Moves every real number of `stored` within rounding ([`super::jitter`]).
@@ -57,27 +64,23 @@ pub trait Argument {
     }
 }
 
-/// The stored form of a parameter no value case holds (a scene, a hit, a medium): no value
-/// of it exists, so a call of a function that takes one cannot be built. Such tasks are
-/// judged by their estimators.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub enum Unstorable {}
-
 /// An argument passed by value: stored as it is.
 macro_rules! by_value {
     ($($ty:ty => probe $probe:expr, show $show:expr, jitter $jitter:expr;)+) => {$(
-        impl Argument for fn($ty) {
-            type Stored = $ty;
+        impl Probe for fn($ty) {
             type Owned = $ty;
             type Lent<'a> = $ty;
-            fn owned(stored: &$ty) -> $ty {
-                *stored
-            }
             fn lend(owned: &mut $ty) -> $ty {
                 *owned
             }
             fn probe() -> $ty {
                 $probe
+            }
+        }
+        impl Argument for fn($ty) {
+            type Stored = $ty;
+            fn owned(stored: &$ty) -> $ty {
+                *stored
             }
             fn show(stored: &$ty) -> String {
                 ($show)(*stored)
@@ -95,18 +98,20 @@ macro_rules! by_value {
 /// An argument passed by reference to a plain value: stored as the value it refers to.
 macro_rules! by_reference {
     ($($ty:ty => probe $probe:expr, show $show:expr;)+) => {$(
-        impl Argument for fn(&$ty) {
-            type Stored = $ty;
+        impl Probe for fn(&$ty) {
             type Owned = $ty;
             type Lent<'a> = &'a $ty;
-            fn owned(stored: &$ty) -> $ty {
-                *stored
-            }
             fn lend(owned: &mut $ty) -> &$ty {
                 owned
             }
             fn probe() -> $ty {
                 $probe
+            }
+        }
+        impl Argument for fn(&$ty) {
+            type Stored = $ty;
+            fn owned(stored: &$ty) -> $ty {
+                *stored
             }
             fn show(stored: &$ty) -> String {
                 ($show)(stored)
@@ -118,24 +123,17 @@ macro_rules! by_reference {
     )+};
 }
 
-/// An argument no value case stores: a probe value only.
-macro_rules! unstorable {
+/// A parameter no value case stores (a scene, a hit, a medium): a probe value only.
+macro_rules! probe_only {
     ($($ty:ty => $owned:ty, lent $lent:ty, probe $probe:expr, lend |$o:ident| $lend:expr;)+) => {$(
-        impl Argument for fn($ty) {
-            type Stored = Unstorable;
+        impl Probe for fn($ty) {
             type Owned = $owned;
             type Lent<'a> = $lent;
-            fn owned(stored: &Unstorable) -> $owned {
-                match *stored {}
-            }
             fn lend($o: &mut $owned) -> Self::Lent<'_> {
                 $lend
             }
             fn probe() -> $owned {
                 $probe
-            }
-            fn show(stored: &Unstorable) -> String {
-                match *stored {}
             }
         }
     )+};
@@ -169,13 +167,9 @@ by_reference! {
         );
 }
 
-impl Argument for fn(&LayerStack) {
-    type Stored = StackInput;
+impl Probe for fn(&LayerStack) {
     type Owned = LayerStack;
     type Lent<'a> = &'a LayerStack;
-    fn owned(stored: &StackInput) -> LayerStack {
-        stored.to_stack()
-    }
     fn lend(owned: &mut LayerStack) -> &LayerStack {
         owned
     }
@@ -189,6 +183,13 @@ impl Argument for fn(&LayerStack) {
             eta_exit: 1.33,
             intensity: 100.0,
         }
+    }
+}
+
+impl Argument for fn(&LayerStack) {
+    type Stored = StackInput;
+    fn owned(stored: &StackInput) -> LayerStack {
+        stored.to_stack()
     }
     fn show(stack: &StackInput) -> String {
         let slabs: Vec<String> = stack
@@ -209,19 +210,22 @@ impl Argument for fn(&LayerStack) {
     }
 }
 
-/// A sampler is stored as its seed: the case draws the same numbers each time.
-impl Argument for fn(&mut Sampler) {
-    type Stored = u64;
+impl Probe for fn(&mut Sampler) {
     type Owned = Sampler;
     type Lent<'a> = &'a mut Sampler;
-    fn owned(seed: &u64) -> Sampler {
-        Sampler::new(*seed, 0)
-    }
     fn lend(owned: &mut Sampler) -> &mut Sampler {
         owned
     }
     fn probe() -> Sampler {
         Sampler::new(0, 0)
+    }
+}
+
+/// A sampler is stored as its seed: the case draws the same numbers each time.
+impl Argument for fn(&mut Sampler) {
+    type Stored = u64;
+    fn owned(seed: &u64) -> Sampler {
+        Sampler::new(*seed, 0)
     }
     fn show(seed: &u64) -> String {
         format!("seed {seed}")
@@ -232,20 +236,23 @@ impl Argument for fn(&mut Sampler) {
     }
 }
 
-/// A BRDF closure is stored as one of the named [`TestBrdf`]s.
-impl Argument for fn(&dyn Fn(Vec3, Vec3) -> f32) {
-    type Stored = TestBrdf;
+impl Probe for fn(&dyn Fn(Vec3, Vec3) -> f32) {
     type Owned = Box<dyn Fn(Vec3, Vec3) -> f32>;
     type Lent<'a> = &'a dyn Fn(Vec3, Vec3) -> f32;
-    fn owned(brdf: &TestBrdf) -> Self::Owned {
-        let brdf = *brdf;
-        Box::new(move |wi, wo| brdf.eval(wi, wo))
-    }
     fn lend(owned: &mut Self::Owned) -> Self::Lent<'_> {
         &**owned
     }
     fn probe() -> Self::Owned {
         Box::new(|_, _| std::f32::consts::FRAC_1_PI)
+    }
+}
+
+/// A BRDF closure is stored as one of the named [`TestBrdf`]s.
+impl Argument for fn(&dyn Fn(Vec3, Vec3) -> f32) {
+    type Stored = TestBrdf;
+    fn owned(brdf: &TestBrdf) -> Self::Owned {
+        let brdf = *brdf;
+        Box::new(move |wi, wo| brdf.eval(wi, wo))
     }
     fn show(brdf: &TestBrdf) -> String {
         brdf.describe()
@@ -263,7 +270,7 @@ fn probe_hit() -> Hit {
         .expect("the probe ray hits the probe scene's floor")
 }
 
-unstorable! {
+probe_only! {
     &Scene => Scene, lent &'a Scene, probe probe_scene(), lend |s| &*s;
     // A camera ray that leaves the scene: written code returns the environment (black)
     // without calling any other task.

@@ -1,7 +1,7 @@
 //! One call of a task function with concrete inputs: what a value case stores, evaluates
 //! and prints in messages.
 
-use super::argument::{Argument, n};
+use super::argument::{Argument, Probe, n};
 use super::output::{IntoOutput, Output, fmt_vec};
 use super::rounding::Jitter;
 use crate::optics::LayerStack;
@@ -81,7 +81,7 @@ macro_rules! calls {
                 match self {
                     $($(Call::$name { $($arg),* } => {
                         $(let mut $arg = <fn($ty) as Argument>::owned($arg);)*
-                        t.$name($(<fn($ty) as Argument>::lend(&mut $arg)),*).into_output()
+                        t.$name($(<fn($ty) as Probe>::lend(&mut $arg)),*).into_output()
                     })+)*
                     Call::sample_jacobian { sampler, points, h } => {
                         let ratios = points

@@ -149,18 +149,9 @@ pub fn hidden_inputs(task: TaskId, seed: u64) -> Vec<CaseInput> {
 /// factors, two of them as large as 2^20, overflows or not depending on their order.
 pub const OVERFLOW_RANGE: f64 = f32::MAX as f64 / 1_099_511_627_776.0;
 
-/// Jittered evaluations per case that measure how the reference's answer moves when its
-/// inputs move within rounding ([`Call::jitters`]).
+/// Jittered evaluations per case that measure how the answer (the contract's and the
+/// reference's) moves when its inputs move within rounding ([`Call::jitters`]).
 const CONDITIONING_SAMPLES: u64 = 6;
-
-/// The contract's answer to `call` in f64 ([`contract`]), or, for a call no contract
-/// covers, `t`'s (the reference's); `Err` with the panic's description when `t` panics.
-fn answer(call: &Call, t: &impl Tasks) -> Result<Output, String> {
-    match contract(call) {
-        Some(out) => Ok(out),
-        None => panics::catch(|| call.eval(t)).map_err(|p| p.describe()),
-    }
-}
 
 /// How far a correct f32 implementation's answer to `call` may lie from `expected`, the
 /// contract's: `None` when correct implementations may disagree on the answer's shape
@@ -175,11 +166,12 @@ fn answer(call: &Call, t: &impl Tasks) -> Result<Output, String> {
 ///   cosine has a few significant bits) every f32 implementation is that far off, however
 ///   exact its inputs.
 ///
-/// For a call no contract covers, `expected` is the reference's and this is its spread.
-fn allowance(call: &Call, expected: &Output, t: &impl Tasks) -> Option<f64> {
+/// For a call no contract covers (`contracted` false), `expected` is the reference's and
+/// this is its spread.
+fn allowance(call: &Call, expected: &Output, contracted: bool, t: &impl Tasks) -> Option<f64> {
     let by_reference = |c: &Call| panics::catch(|| c.eval(t)).ok();
     let jittered = call.jitters(CONDITIONING_SAMPLES);
-    if contract(call).is_none() {
+    if !contracted {
         return spread(call, &jittered, expected, by_reference);
     }
     let reference = by_reference(call)?;
@@ -290,7 +282,14 @@ fn is_zero(output: &Output) -> bool {
 pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<ValueCase>> {
     let mut cases = Vec::with_capacity(inputs.len());
     for input in inputs {
-        let expected = match answer(&input.call, t) {
+        // The contract's answer in f64, or the reference's where the task has none.
+        let contracted = contract(&input.call);
+        let has_contract = contracted.is_some();
+        let answer = contracted.map_or_else(
+            || panics::catch(|| input.call.eval(t)).map_err(|p| p.describe()),
+            Ok,
+        );
+        let expected = match answer {
             // A drawn combination of special values where the answer lies at the edge of
             // f32's range or beyond (a mirror, which no masking bounds, at a subnormal
             // grazing cosine: 1/cos θ alone is 8.5e37) is a singularity of the contract,
@@ -312,7 +311,7 @@ pub fn evaluate(inputs: &[CaseInput], t: &impl Tasks) -> anyhow::Result<Vec<Valu
             Err(panic) => bail!("{} [{}]: the reference {panic}", input.call, input.name),
         };
         let rule = match input.rule {
-            Rule::Close(tol) => match allowance(&input.call, &expected, t) {
+            Rule::Close(tol) => match allowance(&input.call, &expected, has_contract, t) {
                 Some(spread) => Rule::Close(Tolerance::new(tol.abs + 2.0 * spread, tol.rel)),
                 None if input.drawn => continue,
                 None => input.rule,
